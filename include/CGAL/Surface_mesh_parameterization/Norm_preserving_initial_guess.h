@@ -1,0 +1,35 @@
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_INITIAL_GUESS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_INITIAL_GUESS_H
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgNormPreservingParameterization
+/// The connected component handed to an initial guess: vertex positions, indexed
+/// `0..n-1` in the mesh's vertex order, and every edge once as `{i, j}` with `i < j`,
+/// sorted.
+///
+/// An initial guess is a model of the concept `NormPreservingInitialGuess`: a copyable
+/// function object with
+/// \code
+/// Error_code operator()(const Norm_preserving_geometry& geometry,
+///                       std::vector<std::array<double, 2> >& uv,
+///                       std::string& message) const;
+/// \endcode
+/// that resizes `uv` to the number of vertices and fills it, or returns an error code and
+/// a readable `message`. Only the order of the guessed values matters to the method (it
+/// fixes the signs of Eq. 5); the guess is moved into place by a similarity transform.
+struct Norm_preserving_geometry
+{
+  std::vector<std::array<double, 3> > points;      ///< vertex positions
+  std::vector<std::array<std::size_t, 2> > edges;  ///< unique edges `{i, j}`, `i < j`, sorted
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,58 @@
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_REPORT_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_REPORT_H
+
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+
+#include <cstddef>
+#include <string>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgNormPreservingParameterization
+/// What the last call of `Norm_preserving_parameterizer_3::parameterize()` did.
+/// Lengths are in mesh units; objectives are the plain sum of Eq. 4 (no 1/2 factor).
+struct Norm_preserving_report
+{
+  Error_code status = OK;              ///< result of the call
+  std::string message;                 ///< readable reason of a failure, empty on success
+  std::size_t vertices = 0;            ///< vertices of the parameterized component
+  std::size_t edges = 0;               ///< edges of the component, one QP residual each
+  std::size_t fixed_a = 0;             ///< component index of the first fixed vertex
+  std::size_t fixed_b = 0;             ///< component index of the second fixed vertex
+  double initial_objective = 0;        ///< Eq. 4 at the transformed initial guess
+  double objective = 0;                ///< Eq. 4 (equal to Eq. 3) at the solution
+  double max_constraint_violation = 0; ///< largest violation of a sign constraint
+  std::size_t active_constraints = 0;  ///< sign constraints at equality (within 1e-8 mean edge length)
+  std::size_t constraints = 0;         ///< sign constraints, two per edge
+  bool has_solver_statistics = false;  ///< whether the solver reported the two fields below
+  int solver_iterations = 0;           ///< iterations of the QP solver
+  double kkt_residual = 0;             ///< largest KKT residual of the normalized QP (edge lengths ~ 1)
+  double seconds = 0;                  ///< wall-clock time of the call
+};
+
+/// \ingroup PkgNormPreservingParameterization
+/// The message of each `Error_code` (CGAL 5.5's `get_error_message()` is off by one from
+/// `ERROR_NO_TOPOLOGICAL_BALL` on).
+inline const char* error_message(Error_code code)
+{
+  switch(code)
+  {
+    case OK: return "Success";
+    case ERROR_EMPTY_MESH: return "Input mesh is empty";
+    case ERROR_NON_TRIANGULAR_MESH: return "Input mesh is not triangular";
+    case ERROR_NO_TOPOLOGICAL_DISC: return "Input mesh is not a topological disc";
+    case ERROR_NO_TOPOLOGICAL_BALL: return "Input mesh is not a topological ball";
+    case ERROR_BORDER_TOO_SHORT: return "This border parameterization requires a longer border";
+    case ERROR_NON_CONVEX_BORDER: return "This parameterization method requires a convex border";
+    case ERROR_CANNOT_SOLVE_LINEAR_SYSTEM: return "Cannot solve linear system";
+    case ERROR_NO_1_TO_1_MAPPING: return "Parameterization failed: no one-to-one mapping";
+    case ERROR_WRONG_PARAMETER: return "A method received an unexpected parameter";
+  }
+  return "Unknown error";
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,78 @@
+// Step 2 of the paper: the fixed adjacent pair (DESIGN.md item 2) and its target positions.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FIXED_PAIR_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FIXED_PAIR_H
+
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace Norm_preserving {
+
+inline double l1_distance(const std::array<double, 3>& p, const std::array<double, 3>& q)
+{
+  return std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]);
+}
+
+inline bool is_edge(const Norm_preserving_geometry& geometry, std::size_t a, std::size_t b)
+{
+  const std::array<std::size_t, 2> e = {(std::min)(a, b), (std::max)(a, b)};
+  return a != b && std::binary_search(geometry.edges.begin(), geometry.edges.end(), e);
+}
+
+// `a`: the vertex of smallest x, lowest index on ties; `b`: its neighbour across the longest
+// L1 edge, lowest index on ties. The component has at least one edge.
+inline std::pair<std::size_t, std::size_t> automatic_fixed_pair(const Norm_preserving_geometry& geometry)
+{
+  const auto& points = geometry.points;
+  std::size_t a = 0;
+  for(std::size_t i = 1; i < points.size(); ++i)
+    if(points[i][0] < points[a][0]) a = i;
+  std::size_t b = a;
+  double longest = -1;
+  for(const auto& e : geometry.edges)
+  {
+    if(e[0] != a && e[1] != a) continue;
+    const std::size_t other = e[0] == a ? e[1] : e[0];
+    const double length = l1_distance(points[a], points[other]);
+    if(length > longest || (length == longest && other < b))
+    {
+      longest = length;
+      b = other;
+    }
+  }
+  return {a, b};
+}
+
+// Targets (DESIGN.md item 2): `a` at the origin, `b` along the guessed direction from `a` to
+// `b`, at L1 distance (|du| + |dv|) equal to the 3D L1 length of the edge.
+// Returns false if the guess puts `a` and `b` at the same point.
+inline bool fixed_pair_targets(const std::array<double, 2>& guess_a,
+                               const std::array<double, 2>& guess_b,
+                               double l1_length,
+                               std::array<double, 2>& target_a,
+                               std::array<double, 2>& target_b)
+{
+  const double du = guess_b[0] - guess_a[0], dv = guess_b[1] - guess_a[1];
+  const double l1_guess = std::abs(du) + std::abs(dv);
+  if(!(l1_guess > 0))
+    return false;
+  const double t = l1_length / l1_guess;
+  target_a = {0., 0.};
+  target_b = {t * du, t * dv};
+  return true;
+}
+
+} // namespace Norm_preserving
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

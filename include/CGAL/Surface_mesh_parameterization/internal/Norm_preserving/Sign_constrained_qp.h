@@ -1,0 +1,161 @@
+// Step 6 of the paper: signs of u_i - u_j and v_i - v_j from the transformed guess, and the
+// QP of Eq. 5 written into a model of QuadraticProgramTraits.
+//
+// Variables: u_i at 2i, v_i at 2i+1. For edge e = (i, j) with signs (su, sv) the residual is
+// r_e = l1_e - su (u_i - u_j) - sv (v_i - v_j) (Eq. 4) and the sign constraints are rows
+// 2e: su (u_i - u_j) >= 0 and 2e+1: sv (v_i - v_j) >= 0. Rows 2E..2E+3 fix u_a, v_a, u_b, v_b.
+// The objective sum r_e^2 is passed as 1/2 x'Px + q'x + r with P = 2 C'C, q = -2 C'd, r = d'd.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_QP_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_QP_H
+
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Fixed_pair.h>
+
+#include <Eigen/Sparse>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace Norm_preserving {
+
+using UV_vector = std::vector<std::array<double, 2> >;
+
+// Sign (+1 or -1) per edge and coordinate: the sign of (w_i - w_j) in the guess, where
+// w is u or v. A tie is oriented as if the vertex of higher index were the larger (-1, as
+// i < j), a deterministic rule (DESIGN.md item 4); the tied guess satisfies it with equality.
+using Edge_signs = std::vector<std::array<double, 2> >;
+
+inline Edge_signs edge_signs(const Norm_preserving_geometry& geometry, const UV_vector& guess)
+{
+  Edge_signs signs(geometry.edges.size());
+  for(std::size_t e = 0; e < geometry.edges.size(); ++e)
+    for(int c = 0; c < 2; ++c)
+      signs[e][c] = guess[geometry.edges[e][0]][c] > guess[geometry.edges[e][1]][c] ? 1. : -1.;
+  return signs;
+}
+
+inline std::vector<double> edge_l1_lengths(const Norm_preserving_geometry& geometry)
+{
+  std::vector<double> lengths;
+  lengths.reserve(geometry.edges.size());
+  for(const auto& e : geometry.edges)
+    lengths.push_back(l1_distance(geometry.points[e[0]], geometry.points[e[1]]));
+  return lengths;
+}
+
+// Eq. 4: sum over edges of (l1_e - su du - sv dv)^2.
+inline double sign_constrained_objective(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                                         const Edge_signs& signs, const UV_vector& uv)
+{
+  double sum = 0;
+  for(std::size_t e = 0; e < lengths.size(); ++e)
+  {
+    const auto& p = uv[geometry.edges[e][0]];
+    const auto& q = uv[geometry.edges[e][1]];
+    const double r = lengths[e] - signs[e][0] * (p[0] - q[0]) - signs[e][1] * (p[1] - q[1]);
+    sum += r * r;
+  }
+  return sum;
+}
+
+// Eq. 3: sum over edges of (l1_e - |du| - |dv|)^2.
+inline double l1_norm_objective(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                                const UV_vector& uv)
+{
+  double sum = 0;
+  for(std::size_t e = 0; e < lengths.size(); ++e)
+  {
+    const auto& p = uv[geometry.edges[e][0]];
+    const auto& q = uv[geometry.edges[e][1]];
+    const double r = lengths[e] - std::abs(p[0] - q[0]) - std::abs(p[1] - q[1]);
+    sum += r * r;
+  }
+  return sum;
+}
+
+// Smallest sign-constraint value su du, sv dv over all edges (negative if violated), and
+// the number of constraints with value at most `active_threshold`.
+inline std::pair<double, std::size_t> sign_constraint_extent(const Norm_preserving_geometry& geometry,
+                                                            const Edge_signs& signs, const UV_vector& uv,
+                                                            double active_threshold)
+{
+  double lowest = std::numeric_limits<double>::infinity();
+  std::size_t active = 0;
+  for(std::size_t e = 0; e < signs.size(); ++e)
+    for(int c = 0; c < 2; ++c)
+    {
+      const double value = signs[e][c] * (uv[geometry.edges[e][0]][c] - uv[geometry.edges[e][1]][c]);
+      lowest = (std::min)(lowest, value);
+      if(value <= active_threshold) ++active;
+    }
+  return {lowest, active};
+}
+
+struct Fixed_vertex
+{
+  std::size_t index;
+  std::array<double, 2> target;
+};
+
+template <typename QuadraticProgramTraits>
+void assemble_sign_constrained_qp(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                                  const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
+                                  QuadraticProgramTraits& qp)
+{
+  const std::size_t n = 2 * geometry.points.size();
+  const std::size_t m = 2 * geometry.edges.size();
+  std::vector<Eigen::Triplet<double> > hessian;
+  hessian.reserve(10 * geometry.edges.size());
+  std::vector<double> q(n, 0.);
+  double r = 0;
+  for(std::size_t e = 0; e < m / 2; ++e)
+  {
+    const std::size_t i = geometry.edges[e][0], j = geometry.edges[e][1];
+    const std::array<int, 4> var = {int(2 * i), int(2 * i + 1), int(2 * j), int(2 * j + 1)};
+    const std::array<double, 4> a = {signs[e][0], signs[e][1], -signs[e][0], -signs[e][1]};
+    for(int s = 0; s < 4; ++s)
+    {
+      q[var[s]] -= 2. * lengths[e] * a[s];
+      for(int t = 0; t < 4; ++t)
+        if(var[s] <= var[t])
+          hessian.emplace_back(var[s], var[t], 2. * a[s] * a[t]);
+    }
+    r += lengths[e] * lengths[e];
+    for(int c = 0; c < 2; ++c)
+    {
+      qp.set_A(2 * e + c, 2 * i + c, signs[e][c]);
+      qp.set_A(2 * e + c, 2 * j + c, -signs[e][c]);
+      qp.set_l(2 * e + c, 0.);
+      qp.set_u(2 * e + c, std::numeric_limits<double>::infinity());
+    }
+  }
+  Eigen::SparseMatrix<double> P(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n)); // upper triangle, duplicates summed
+  P.setFromTriplets(hessian.begin(), hessian.end());
+  for(int c = 0; c < P.outerSize(); ++c)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(P, c); it; ++it)
+      qp.set_P(std::size_t(it.row()), std::size_t(it.col()), it.value());
+  for(std::size_t k = 0; k < n; ++k)
+    qp.set_q(k, q[k]);
+  qp.set_r(r);
+  for(std::size_t f = 0; f < 2; ++f)
+    for(int c = 0; c < 2; ++c)
+    {
+      const std::size_t row = m + 2 * f + c;
+      qp.set_A(row, 2 * fixed[f].index + c, 1.);
+      qp.set_l(row, fixed[f].target[c]);
+      qp.set_u(row, fixed[f].target[c]);
+    }
+}
+
+} // namespace Norm_preserving
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,31 @@
+// Sparse Cholesky factorization used by the interior-point QP solver: CHOLMOD's supernodal
+// factorization when the package was configured with it, Eigen's simplicial one otherwise.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SPARSE_CHOLESKY_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SPARSE_CHOLESKY_H
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace Norm_preserving {
+
+using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+using Sparse_cholesky = Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower>;
+#else
+using Sparse_cholesky = Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> >;
+#endif
+
+} // namespace Norm_preserving
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,55 @@
+// Steps 8-9 of the paper: fitting the solution into texture space (DESIGN.md item 8) and
+// m x n tiling.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TEXTURE_SPACE_FIT_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TEXTURE_SPACE_FIT_H
+
+#include <CGAL/Surface_mesh_parameterization/Texture_fit.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace Norm_preserving {
+
+inline void fit_to_texture_space(std::vector<std::array<double, 2> >& uv, Texture_fit fit,
+                                 int tiles_u, int tiles_v)
+{
+  if(uv.empty()) return;
+  if(fit == UNIFORM_FIT)
+  {
+    std::array<double, 2> low = uv[0], high = uv[0];
+    for(const auto& p : uv)
+      for(int c = 0; c < 2; ++c)
+      {
+        low[c] = (std::min)(low[c], p[c]);
+        high[c] = (std::max)(high[c], p[c]);
+      }
+    const double extent = (std::max)(high[0] - low[0], high[1] - low[1]);
+    const double scale = extent > 0 ? 1. / extent : 1.;
+    for(auto& p : uv)
+      for(int c = 0; c < 2; ++c)
+        p[c] = (p[c] - low[c]) * scale;
+  }
+  else if(fit == CLAMP_FIT)
+  {
+    for(auto& p : uv)
+      for(int c = 0; c < 2; ++c)
+        p[c] = (std::min)(1., (std::max)(0., p[c]));
+  }
+  for(auto& p : uv)
+  {
+    p[0] *= tiles_u;
+    p[1] *= tiles_v;
+  }
+}
+
+} // namespace Norm_preserving
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,348 @@
+// Norm_preserving_parameterizer_3 on real meshes of every topology, its CGAL drop-in use,
+// texture fitting, and its answers to bad input.
+
+#include "test_meshes.h"
+
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using np_test::Mesh;
+using np_test::Point_2;
+using np_test::Point_3;
+using Vertex = Mesh::Vertex_index;
+using Halfedge = Mesh::Halfedge_index;
+using Parameterizer = SMP::Norm_preserving_parameterizer_3<Mesh>;
+
+const Point_2 sentinel(-123.5, 456.25);
+
+struct Mapped_mesh
+{
+  Mesh mesh;
+  Mesh::Property_map<Vertex, Point_2> uv;
+  Mesh::Property_map<Vertex, bool> marked;
+  SMP::Error_code status = SMP::OK;
+  SMP::Norm_preserving_report report;
+
+  explicit Mapped_mesh(Mesh m) : mesh(std::move(m))
+  {
+    uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
+    marked = mesh.add_property_map<Vertex, bool>("v:marked", false).first;
+  }
+  void parameterize(Parameterizer& parameterizer, Halfedge h)
+  {
+    status = parameterizer.parameterize(mesh, h, uv, get(CGAL::vertex_index, mesh), marked);
+    report = parameterizer.report();
+  }
+  bool untouched() const
+  {
+    for(Vertex v : vertices(mesh))
+      if(get(uv, v) != sentinel || get(marked, v)) return false;
+    return true;
+  }
+};
+
+double l1(const Point_3& p, const Point_3& q)
+{
+  return std::abs(p.x() - q.x()) + std::abs(p.y() - q.y()) + std::abs(p.z() - q.z());
+}
+
+// Eq. 3 recomputed from the written uvs (NO_FIT: mesh units), independently of the solver.
+double eq3(const Mapped_mesh& run)
+{
+  double sum = 0;
+  for(auto e : edges(run.mesh))
+  {
+    const Vertex i = source(halfedge(e, run.mesh), run.mesh), j = target(halfedge(e, run.mesh), run.mesh);
+    if(!get(run.marked, i)) continue;
+    const Point_2 a = get(run.uv, i), b = get(run.uv, j);
+    const double r = l1(run.mesh.point(i), run.mesh.point(j)) - std::abs(a.x() - b.x()) - std::abs(a.y() - b.y());
+    sum += r * r;
+  }
+  return sum;
+}
+
+double mean_edge_length(const Mesh& mesh)
+{
+  double sum = 0;
+  for(auto e : edges(mesh))
+    sum += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+  return sum / double(num_edges(mesh));
+}
+
+class RealMesh : public ::testing::TestWithParam<std::string> { };
+
+TEST_P(RealMesh, SolvesToAFeasibleOptimumWithTheFixedPairInPlace)
+{
+  Mapped_mesh run(np_test::load_mesh(GetParam()));
+  Parameterizer parameterizer;
+  parameterizer.set_texture_fit(SMP::NO_FIT);
+  const Halfedge h = *halfedges(run.mesh).begin();
+  run.parameterize(parameterizer, h);
+  ASSERT_EQ(run.status, SMP::OK) << run.report.message;
+
+  // Every vertex of the component (all of these meshes are connected) is finite and marked.
+  for(Vertex v : vertices(run.mesh))
+  {
+    ASSERT_TRUE(get(run.marked, v));
+    ASSERT_TRUE(std::isfinite(get(run.uv, v).x()) && std::isfinite(get(run.uv, v).y()));
+  }
+  EXPECT_EQ(run.report.vertices, num_vertices(run.mesh));
+  EXPECT_EQ(run.report.edges, num_edges(run.mesh));
+
+  // Feasible, optimal (KKT), and no worse than the transformed guess.
+  EXPECT_LE(run.report.max_constraint_violation, 1e-9 * mean_edge_length(run.mesh));
+  EXPECT_LT(run.report.kkt_residual, 1e-8);
+  EXPECT_LE(run.report.objective, run.report.initial_objective);
+  EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective);
+
+  // The fixed pair: source(h) at the origin, target(h) along the XY-MinMax direction at L1
+  // distance equal to the edge's 3D L1 length.
+  const Vertex a = source(h, run.mesh), b = target(h, run.mesh);
+  EXPECT_EQ(get(run.uv, a), Point_2(0, 0));
+  double x_lo = std::numeric_limits<double>::max(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
+  for(Vertex v : vertices(run.mesh))
+  {
+    x_lo = std::min(x_lo, run.mesh.point(v).x()); x_hi = std::max(x_hi, run.mesh.point(v).x());
+    y_lo = std::min(y_lo, run.mesh.point(v).y()); y_hi = std::max(y_hi, run.mesh.point(v).y());
+  }
+  const double du = (run.mesh.point(b).x() - run.mesh.point(a).x()) / (x_hi - x_lo);
+  const double dv = (run.mesh.point(b).y() - run.mesh.point(a).y()) / (y_hi - y_lo);
+  const double t = l1(run.mesh.point(a), run.mesh.point(b)) / (std::abs(du) + std::abs(dv));
+  const double tolerance = 1e-12 * l1(run.mesh.point(a), run.mesh.point(b));
+  EXPECT_NEAR(get(run.uv, b).x(), t * du, tolerance);
+  EXPECT_NEAR(get(run.uv, b).y(), t * dv, tolerance);
+
+  // Same input, same output, bit for bit.
+  Mapped_mesh again(np_test::load_mesh(GetParam()));
+  again.parameterize(parameterizer, h);
+  for(Vertex v : vertices(run.mesh))
+    ASSERT_EQ(get(run.uv, v), get(again.uv, v));
+}
+
+INSTANTIATE_TEST_SUITE_P(Suite, RealMesh,
+  ::testing::Values("nefertiti", "mushroom",        // disks
+                    "cow", "camel",                 // closed, genus 0
+                    "knot1", "eight", "elephant",   // genus 1, 2, 3
+                    "holes", "lion"));              // several border loops
+
+TEST(NormPreservingParameterizer, WorksThroughCGALParameterizeOnADisk)
+{
+  for(const std::string name : {"nefertiti", "mushroom"})
+  {
+    Mesh mesh = np_test::load_mesh(name);
+    auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv").first;
+    Halfedge border = Mesh::null_halfedge();
+    for(Halfedge h : halfedges(mesh))
+      if(is_border(h, mesh)) { border = h; break; }
+    ASSERT_EQ(SMP::parameterize(mesh, Parameterizer(), border, uv), SMP::OK);
+    double lo = 1, hi = 0; // the default fit puts the map in [0,1]^2, touching both ends
+    for(Vertex v : vertices(mesh))
+    {
+      lo = std::min({lo, get(uv, v).x(), get(uv, v).y()});
+      hi = std::max({hi, get(uv, v).x(), get(uv, v).y()});
+    }
+    EXPECT_EQ(lo, 0.);
+    EXPECT_EQ(hi, 1.);
+  }
+}
+
+TEST(NormPreservingParameterizer, ParameterizesOnlyTheComponentOfTheHalfedge)
+{
+  Mapped_mesh run(np_test::load_mesh("knot2")); // two connected components
+  Parameterizer parameterizer;
+  run.parameterize(parameterizer, *halfedges(run.mesh).begin());
+  ASSERT_EQ(run.status, SMP::OK) << run.report.message;
+  std::size_t marked = 0;
+  for(Vertex v : vertices(run.mesh))
+  {
+    if(get(run.marked, v)) ++marked;
+    else EXPECT_EQ(get(run.uv, v), sentinel);
+  }
+  EXPECT_EQ(marked, run.report.vertices);
+  EXPECT_GT(marked, 0u);
+  EXPECT_LT(marked, num_vertices(run.mesh));
+}
+
+TEST(NormPreservingParameterizer, FitsAndTilesTextureSpace)
+{
+  Mapped_mesh raw(np_test::load_mesh("cow")), fitted(np_test::load_mesh("cow")), clamped(np_test::load_mesh("cow"));
+  const Halfedge h = *halfedges(raw.mesh).begin();
+  Parameterizer parameterizer;
+  parameterizer.set_texture_fit(SMP::NO_FIT);
+  raw.parameterize(parameterizer, h);
+  parameterizer.set_texture_fit(SMP::UNIFORM_FIT);
+  parameterizer.set_tiling(2, 3);
+  fitted.parameterize(parameterizer, h);
+  parameterizer.set_texture_fit(SMP::CLAMP_FIT);
+  parameterizer.set_tiling(1, 1);
+  clamped.parameterize(parameterizer, h);
+
+  double u_lo = 1e300, v_lo = 1e300, u_hi = -1e300, v_hi = -1e300;
+  for(Vertex v : vertices(raw.mesh))
+  {
+    const Point_2 p = get(raw.uv, v);
+    u_lo = std::min(u_lo, p.x()); u_hi = std::max(u_hi, p.x());
+    v_lo = std::min(v_lo, p.y()); v_hi = std::max(v_hi, p.y());
+  }
+  const double scale = 1. / std::max(u_hi - u_lo, v_hi - v_lo);
+  for(Vertex v : vertices(raw.mesh))
+  {
+    const Point_2 p = get(raw.uv, v), f = get(fitted.uv, v), c = get(clamped.uv, v);
+    EXPECT_NEAR(f.x(), 2 * (p.x() - u_lo) * scale, 1e-12);
+    EXPECT_NEAR(f.y(), 3 * (p.y() - v_lo) * scale, 1e-12);
+    EXPECT_EQ(c.x(), std::min(1., std::max(0., p.x())));
+    EXPECT_EQ(c.y(), std::min(1., std::max(0., p.y())));
+  }
+}
+
+TEST(NormPreservingParameterizer, UsesTheAutomaticOrExplicitFixedPair)
+{
+  Mapped_mesh automatic(np_test::load_mesh("cow")), explicit_pair(np_test::load_mesh("cow"));
+  Parameterizer parameterizer;
+  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_automatic_fixed_pair();
+  automatic.parameterize(parameterizer, *halfedges(automatic.mesh).begin());
+  ASSERT_EQ(automatic.status, SMP::OK);
+
+  // The automatic pair: the vertex of smallest x and its neighbour across the longest L1 edge.
+  Vertex a = *vertices(automatic.mesh).begin();
+  for(Vertex v : vertices(automatic.mesh))
+    if(automatic.mesh.point(v).x() < automatic.mesh.point(a).x()) a = v;
+  Vertex b = a;
+  for(Vertex w : CGAL::vertices_around_target(a, automatic.mesh))
+    if(b == a || l1(automatic.mesh.point(a), automatic.mesh.point(w)) > l1(automatic.mesh.point(a), automatic.mesh.point(b)))
+      b = w;
+  EXPECT_EQ(automatic.report.fixed_a, std::size_t(a));
+  EXPECT_EQ(automatic.report.fixed_b, std::size_t(b));
+  EXPECT_EQ(get(automatic.uv, a), Point_2(0, 0));
+
+  // The same pair given explicitly gives the same map.
+  parameterizer.set_fixed_pair(a, b);
+  explicit_pair.parameterize(parameterizer, *halfedges(explicit_pair.mesh).begin());
+  ASSERT_EQ(explicit_pair.status, SMP::OK);
+  for(Vertex v : vertices(automatic.mesh))
+    ASSERT_EQ(get(automatic.uv, v), get(explicit_pair.uv, v));
+}
+
+// Bad input: an error code, a readable message, and the uv map exactly as it was.
+void expect_rejected(Mapped_mesh& run, Parameterizer& parameterizer, Halfedge h, SMP::Error_code code, const std::string& words)
+{
+  run.parameterize(parameterizer, h);
+  EXPECT_EQ(run.status, code) << run.report.message;
+  EXPECT_NE(run.report.message.find(words), std::string::npos) << run.report.message;
+  EXPECT_TRUE(run.untouched());
+}
+
+TEST(NormPreservingParameterizerErrors, EmptyMesh)
+{
+  Mapped_mesh run{Mesh()};
+  Parameterizer parameterizer;
+  expect_rejected(run, parameterizer, Mesh::null_halfedge(), SMP::ERROR_EMPTY_MESH, "no face");
+}
+
+TEST(NormPreservingParameterizerErrors, NonTriangleMesh)
+{
+  Mesh cube;
+  CGAL::make_hexahedron(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0),
+                        Point_3(0, 1, 1), Point_3(0, 0, 1), Point_3(1, 0, 1), Point_3(1, 1, 1), cube);
+  Mapped_mesh run(cube);
+  Parameterizer parameterizer;
+  expect_rejected(run, parameterizer, *halfedges(run.mesh).begin(), SMP::ERROR_NON_TRIANGULAR_MESH, "4 vertices");
+}
+
+TEST(NormPreservingParameterizerErrors, FaceWithARepeatedVertex)
+{
+  // A triangle (a, b, a) built halfedge by halfedge next to a proper one.
+  Mesh mesh;
+  const Vertex a = mesh.add_vertex(Point_3(0, 0, 0)), b = mesh.add_vertex(Point_3(1, 0, 0));
+  const Vertex c = mesh.add_vertex(Point_3(0, 1, 0));
+  mesh.add_face(a, b, c);
+  const Halfedge ab = mesh.halfedge(a, b);
+  const Halfedge ba = mesh.opposite(ab);
+  const Halfedge loop = mesh.add_edge(a, a);
+  const auto f = mesh.add_face();
+  mesh.set_face(ba, f); mesh.set_face(loop, f); mesh.set_face(mesh.opposite(loop), f);
+  mesh.set_next(ba, loop); mesh.set_next(loop, mesh.opposite(loop)); mesh.set_next(mesh.opposite(loop), ba);
+  mesh.set_halfedge(f, ba);
+  Mapped_mesh run(mesh);
+  Parameterizer parameterizer;
+  expect_rejected(run, parameterizer, ab, SMP::ERROR_NON_TRIANGULAR_MESH, "repeated vertex");
+}
+
+TEST(NormPreservingParameterizerErrors, NonFiniteCoordinates)
+{
+  for(double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+  {
+    Mapped_mesh run(np_test::tetrahedron());
+    run.mesh.point(*vertices(run.mesh).begin()) = Point_3(0, bad, 0);
+    Parameterizer parameterizer;
+    expect_rejected(run, parameterizer, *halfedges(run.mesh).begin(), SMP::ERROR_WRONG_PARAMETER, "non-finite");
+  }
+}
+
+TEST(NormPreservingParameterizerErrors, AllVerticesWithTheSameXOrY)
+{
+  for(int axis = 0; axis < 2; ++axis)
+  {
+    Mesh mesh;
+    auto p = [axis](double s, double t) { return axis == 0 ? Point_3(0, s, t) : Point_3(s, 0, t); };
+    CGAL::make_tetrahedron(p(0, 0), p(1, 0), p(0, 1), p(1, 1), mesh); // flat in x (or y)
+    Mapped_mesh run(mesh);
+    Parameterizer parameterizer;
+    expect_rejected(run, parameterizer, *halfedges(run.mesh).begin(), SMP::ERROR_WRONG_PARAMETER,
+                    axis == 0 ? "same x" : "same y");
+  }
+}
+
+TEST(NormPreservingParameterizerErrors, FixedPairThatIsNotAnEdge)
+{
+  Mapped_mesh run(np_test::load_mesh("cow"));
+  Parameterizer parameterizer;
+  const Halfedge h = *halfedges(run.mesh).begin();
+  const Vertex a = source(h, run.mesh);
+  Vertex b = a;
+  for(Vertex v : vertices(run.mesh)) // a vertex not adjacent to a
+  {
+    bool adjacent = (v == a);
+    for(Vertex w : CGAL::vertices_around_target(a, run.mesh)) adjacent = adjacent || w == v;
+    if(!adjacent) { b = v; break; }
+  }
+  parameterizer.set_fixed_pair(a, b);
+  expect_rejected(run, parameterizer, h, SMP::ERROR_WRONG_PARAMETER, "not the two ends of an edge");
+}
+
+TEST(NormPreservingParameterizerErrors, FixedPairInAnotherComponent)
+{
+  Mapped_mesh run(np_test::load_mesh("knot2"));
+  Parameterizer parameterizer;
+  const Halfedge h = *halfedges(run.mesh).begin();
+  auto component = run.mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component").first;
+  ASSERT_EQ(CGAL::Polygon_mesh_processing::connected_components(run.mesh, component), 2u);
+  Halfedge other = h;
+  for(auto f : faces(run.mesh))
+    if(get(component, f) != get(component, face(h, run.mesh))) other = halfedge(f, run.mesh);
+  parameterizer.set_fixed_pair(source(other, run.mesh), target(other, run.mesh));
+  expect_rejected(run, parameterizer, h, SMP::ERROR_WRONG_PARAMETER, "not in the component");
+}
+
+TEST(NormPreservingParameterizerErrors, MessagesOfEveryErrorCode)
+{
+  EXPECT_STREQ(SMP::error_message(SMP::ERROR_NO_TOPOLOGICAL_BALL), "Input mesh is not a topological ball");
+  EXPECT_STREQ(SMP::error_message(SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM), "Cannot solve linear system");
+  EXPECT_STREQ(SMP::error_message(SMP::ERROR_WRONG_PARAMETER), "A method received an unexpected parameter");
+}
+
+} // namespace
