@@ -24,7 +24,7 @@ struct Parameterization_distortion
   std::size_t edges = 0;               ///< edges measured
   double edge_length_error = 0;        ///< RMS of (s ||uv_i - uv_j||_2 - ||P_i - P_j||_2) / mean 3D length
   double l1_edge_length_error = 0;     ///< RMS of (s (|du| + |dv|) - ||P_i - P_j||_1) / mean 3D L1 length
-  std::size_t flipped_faces = 0;       ///< faces whose uv orientation is the minority one
+  std::size_t flipped_faces = 0;       ///< faces oriented against the orientation of most of the 3D area
   double flipped_area_fraction = 0;    ///< 3D area of those faces over the total 3D area
   std::size_t degenerate_uv_faces = 0; ///< faces of zero uv area
 };
@@ -96,8 +96,9 @@ Parameterization_distortion measure_distortion(const TriangleMesh& mesh, VertexU
     else if(uv_area < 0) { ++negative; negative_area += area; }
     else ++d.degenerate_uv_faces;
   }
-  d.flipped_faces = (std::min)(positive, negative);
-  d.flipped_area_fraction = total_area > 0 ? (positive < negative ? positive_area : negative_area) / total_area : 0.;
+  const bool positive_is_reference = positive_area >= negative_area;
+  d.flipped_faces = positive_is_reference ? negative : positive;
+  d.flipped_area_fraction = total_area > 0 ? (positive_is_reference ? negative_area : positive_area) / total_area : 0.;
   return d;
 }
 

@@ -1,0 +1,95 @@
+// measure_distortion against values computed by hand on small meshes.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_distortion.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using Kernel = CGAL::Simple_cartesian<double>;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Vertex = Mesh::Vertex_index;
+
+struct Mapped
+{
+  Mesh mesh;
+  Mesh::Property_map<Vertex, Kernel::Point_2> uv;
+  Mesh::Property_map<Vertex, bool> all;
+  std::vector<Vertex> v;
+
+  Mapped()
+  {
+    uv = mesh.add_property_map<Vertex, Kernel::Point_2>("v:uv").first;
+    all = mesh.add_property_map<Vertex, bool>("v:all", true).first;
+  }
+  void add(double x, double y, double z, double u, double w)
+  {
+    v.push_back(mesh.add_vertex(Kernel::Point_3(x, y, z)));
+    put(uv, v.back(), Kernel::Point_2(u, w));
+  }
+  SMP::Parameterization_distortion measure() { return SMP::measure_distortion(mesh, uv, all); }
+};
+
+TEST(Distortion, ASimilarityHasNoEdgeLengthError)
+{
+  Mapped m; // right triangle, uv = 2 * xy rotated by 90 degrees
+  m.add(0, 0, 0, 0, 0); m.add(1, 0, 0, 0, 2); m.add(0, 1, 0, -2, 0);
+  m.mesh.add_face(m.v[0], m.v[1], m.v[2]);
+  const auto d = m.measure();
+  EXPECT_EQ(d.faces, 1u);
+  EXPECT_EQ(d.edges, 3u);
+  EXPECT_NEAR(d.edge_length_error, 0, 1e-15);
+  EXPECT_EQ(d.flipped_faces, 0u);
+  EXPECT_EQ(d.degenerate_uv_faces, 0u);
+}
+
+TEST(Distortion, AnAffineStretchMatchesTheHandComputedError)
+{
+  Mapped m; // u = 2x, v = y: 3D lengths 1, 1, sqrt 2; uv lengths 2, 1, sqrt 5
+  m.add(0, 0, 0, 0, 0); m.add(1, 0, 0, 2, 0); m.add(0, 1, 0, 0, 1);
+  m.mesh.add_face(m.v[0], m.v[1], m.v[2]);
+  const double L[3] = {1, 1, std::sqrt(2.)}, T[3] = {2, 1, std::sqrt(5.)};
+  const double s = (3 + std::sqrt(10.)) / 10; // sum(L T) / sum(T^2)
+  double squares = 0;
+  for(int k = 0; k < 3; ++k) squares += (s * T[k] - L[k]) * (s * T[k] - L[k]);
+  const double mean = (2 + std::sqrt(2.)) / 3;
+  EXPECT_NEAR(m.measure().edge_length_error, std::sqrt(squares / 3) / mean, 1e-14);
+  // L1: 3D lengths 1, 1, 2; uv L1 lengths 2, 1, 3; s = (2 + 1 + 6) / (4 + 1 + 9).
+  const double s1 = 9. / 14, L1[3] = {1, 1, 2}, T1[3] = {2, 1, 3};
+  double squares1 = 0;
+  for(int k = 0; k < 3; ++k) squares1 += (s1 * T1[k] - L1[k]) * (s1 * T1[k] - L1[k]);
+  EXPECT_NEAR(m.measure().l1_edge_length_error, std::sqrt(squares1 / 3) / (4. / 3), 1e-14);
+}
+
+TEST(Distortion, CountsAFlippedFaceAndItsArea)
+{
+  Mapped m; // faces of 3D areas 1/2 and 1, oriented oppositely in uv: the smaller one is flipped
+  m.add(0, 0, 0, 0, 0); m.add(1, 0, 0, 1, 0); m.add(0, 1, 0, 0, 1); m.add(0, -2, 0, 0, 0.5);
+  m.mesh.add_face(m.v[0], m.v[1], m.v[2]);
+  m.mesh.add_face(m.v[0], m.v[3], m.v[1]);
+  const auto d = m.measure();
+  EXPECT_EQ(d.faces, 2u);
+  EXPECT_EQ(d.flipped_faces, 1u);
+  EXPECT_NEAR(d.flipped_area_fraction, 1. / 3, 1e-15);
+}
+
+TEST(Distortion, CountsDegenerateUVFacesAndSkipsUnmappedVertices)
+{
+  Mapped m;
+  m.add(0, 0, 0, 0, 0); m.add(1, 0, 0, 1, 1); m.add(0, 1, 0, 2, 2); m.add(1, 1, 1, 5, 5);
+  m.mesh.add_face(m.v[0], m.v[1], m.v[2]);
+  m.mesh.add_face(m.v[2], m.v[1], m.v[3]);
+  put(m.all, m.v[3], false);
+  const auto d = m.measure();
+  EXPECT_EQ(d.faces, 1u);
+  EXPECT_EQ(d.edges, 3u);
+  EXPECT_EQ(d.degenerate_uv_faces, 1u);
+}
+
+} // namespace
