@@ -1,0 +1,206 @@
+// texture_polygon_mesh: polygon meshes of any topology and several components in one call.
+
+#include "test_meshes.h"
+
+#include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using np_test::Mesh;
+using np_test::Point_2;
+using np_test::Point_3;
+using Vertex = Mesh::Vertex_index;
+using Options = SMP::Texture_polygon_mesh_options<Mesh>;
+
+const Point_2 sentinel(-5.5, 9.25);
+
+struct Textured
+{
+  Mesh mesh;
+  Mesh::Property_map<Vertex, Point_2> uv;
+  SMP::Texture_polygon_mesh_report report;
+  SMP::Error_code status = SMP::OK;
+
+  explicit Textured(Mesh m, const Options& options = Options()) : mesh(std::move(m))
+  {
+    uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
+    status = SMP::texture_polygon_mesh(mesh, uv, options, &report);
+  }
+  bool untouched() const
+  {
+    for(Vertex v : vertices(mesh))
+      if(get(uv, v) != sentinel) return false;
+    return true;
+  }
+};
+
+// Bounding box of each connected component's uvs: {u_lo, v_lo, u_hi, v_hi}.
+std::vector<std::array<double, 4> > component_boxes(const Textured& t)
+{
+  Mesh copy = t.mesh;
+  auto id = copy.add_property_map<Mesh::Face_index, std::size_t>("f:id").first;
+  const std::size_t n = CGAL::Polygon_mesh_processing::connected_components(copy, id);
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<std::array<double, 4> > boxes(n, {inf, inf, -inf, -inf});
+  for(auto f : faces(copy))
+    for(Vertex v : CGAL::vertices_around_face(halfedge(f, copy), copy))
+    {
+      auto& b = boxes[get(id, f)];
+      const Point_2 p = get(t.uv, v);
+      b = {std::min(b[0], p.x()), std::min(b[1], p.y()), std::max(b[2], p.x()), std::max(b[3], p.y())};
+    }
+  return boxes;
+}
+
+class PolygonMesh : public ::testing::TestWithParam<std::string> { };
+
+TEST_P(PolygonMesh, CoversEveryComponentWithDisjointBoxesInTheUnitSquare)
+{
+  Textured t(np_test::load_mesh(GetParam()));
+  ASSERT_EQ(t.status, SMP::OK) << t.report.message;
+  for(Vertex v : vertices(t.mesh))
+  {
+    const Point_2 p = get(t.uv, v);
+    ASSERT_TRUE(p.x() >= 0 && p.x() <= 1 && p.y() >= 0 && p.y() <= 1) << p;
+  }
+  const auto boxes = component_boxes(t);
+  EXPECT_EQ(boxes.size(), t.report.components);
+  for(std::size_t i = 0; i < boxes.size(); ++i)
+    for(std::size_t j = i + 1; j < boxes.size(); ++j)
+    {
+      const bool apart = boxes[i][2] < boxes[j][0] || boxes[j][2] < boxes[i][0] ||
+                         boxes[i][3] < boxes[j][1] || boxes[j][3] < boxes[i][1];
+      EXPECT_TRUE(apart) << "components " << i << " and " << j << " overlap";
+    }
+  for(const auto& r : t.report.reports)
+    EXPECT_LE(r.objective, r.initial_objective);
+}
+
+INSTANTIATE_TEST_SUITE_P(Suite, PolygonMesh,
+  ::testing::Values("double-torus-example", "3torus", "torus_quad", "cube_quad", // polygonal
+                    "knot2"));                                                 // two components
+
+TEST(TexturePolygonMesh, KeepsEachComponentAtTheCommonScale)
+{
+  Options options;
+  options.texture_fit = SMP::NO_FIT;
+  Textured whole(np_test::load_mesh("knot2"), options);
+  ASSERT_EQ(whole.status, SMP::OK);
+  ASSERT_EQ(whole.report.components, 2u);
+
+  // Each component alone, with the same automatic pair, differs only by a translation.
+  Mesh mesh = np_test::load_mesh("knot2");
+  auto id = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:id").first;
+  CGAL::Polygon_mesh_processing::connected_components(mesh, id);
+  for(std::size_t c = 0; c < 2; ++c)
+  {
+    auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv" + std::to_string(c)).first;
+    auto done = mesh.add_property_map<Vertex, bool>("v:done" + std::to_string(c), false).first;
+    SMP::Norm_preserving_parameterizer_3<Mesh> alone;
+    alone.set_texture_fit(SMP::NO_FIT);
+    alone.set_automatic_fixed_pair();
+    Mesh::Face_index seed;
+    for(auto f : faces(mesh)) if(get(id, f) == c) { seed = f; break; }
+    ASSERT_EQ(alone.parameterize(mesh, halfedge(seed, mesh), uv, get(CGAL::vertex_index, mesh), done), SMP::OK);
+    std::optional<CGAL::Vector_2<np_test::Kernel> > shift;
+    for(Vertex v : vertices(mesh))
+    {
+      if(!get(done, v)) continue;
+      const auto d = get(whole.uv, v) - get(uv, v);
+      if(!shift) shift = d;
+      EXPECT_NEAR(d.x(), shift->x(), 1e-9);
+      EXPECT_NEAR(d.y(), shift->y(), 1e-9);
+    }
+  }
+}
+
+TEST(TexturePolygonMesh, TilesTheFittedLayout)
+{
+  Options options;
+  options.tiles_u = 3;
+  options.tiles_v = 2;
+  Textured t(np_test::load_mesh("torus_quad"), options);
+  ASSERT_EQ(t.status, SMP::OK);
+  double u_hi = 0, v_hi = 0, lo = 1;
+  for(Vertex v : vertices(t.mesh))
+  {
+    u_hi = std::max(u_hi, get(t.uv, v).x());
+    v_hi = std::max(v_hi, get(t.uv, v).y());
+    lo = std::min({lo, get(t.uv, v).x(), get(t.uv, v).y()});
+  }
+  EXPECT_EQ(lo, 0.);
+  EXPECT_LE(u_hi, 3.);
+  EXPECT_LE(v_hi, 2.);
+  EXPECT_TRUE(u_hi == 3. || v_hi == 2.); // the longer side of the layout fills its tiles
+}
+
+TEST(TexturePolygonMesh, NormPreservesTheExplicitFixedEdge)
+{
+  Mesh mesh = np_test::load_mesh("torus_quad");
+  const auto h = *halfedges(mesh).begin();
+  Options options;
+  options.texture_fit = SMP::NO_FIT;
+  options.fixed_pair = std::make_pair(source(h, mesh), target(h, mesh));
+  Textured t(mesh, options);
+  ASSERT_EQ(t.status, SMP::OK) << t.report.message;
+  const Point_3 p = mesh.point(source(h, mesh)), q = mesh.point(target(h, mesh));
+  const Point_2 a = get(t.uv, source(h, mesh)), b = get(t.uv, target(h, mesh));
+  const double l1 = std::abs(p.x() - q.x()) + std::abs(p.y() - q.y()) + std::abs(p.z() - q.z());
+  EXPECT_NEAR(std::abs(a.x() - b.x()) + std::abs(a.y() - b.y()), l1, 1e-12 * l1);
+}
+
+TEST(TexturePolygonMesh, LeavesIsolatedVerticesAlone)
+{
+  Mesh mesh = np_test::load_mesh("cube_quad");
+  const Vertex lonely = mesh.add_vertex(Point_3(5, 5, 5));
+  Textured t(mesh);
+  ASSERT_EQ(t.status, SMP::OK);
+  EXPECT_EQ(t.report.isolated_vertices, 1u);
+  EXPECT_EQ(get(t.uv, lonely), sentinel);
+  for(Vertex v : vertices(t.mesh))
+    if(v != lonely) { EXPECT_NE(get(t.uv, v), sentinel); }
+}
+
+TEST(TexturePolygonMeshErrors, EmptyMesh)
+{
+  Textured t{Mesh()};
+  EXPECT_EQ(t.status, SMP::ERROR_EMPTY_MESH);
+  EXPECT_FALSE(t.report.message.empty());
+}
+
+TEST(TexturePolygonMeshErrors, OneBadComponentLeavesTheWholeMapUntouched)
+{
+  Mesh mesh = np_test::load_mesh("cube_quad");
+  Mesh flat; // a second component with every vertex at x = 7: XY-MinMax is undefined there
+  CGAL::make_tetrahedron(Point_3(7, 0, 0), Point_3(7, 1, 0), Point_3(7, 0, 1), Point_3(7, 1, 1), flat);
+  CGAL::copy_face_graph(flat, mesh);
+  Textured t(mesh);
+  EXPECT_EQ(t.status, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_NE(t.report.message.find("same x"), std::string::npos) << t.report.message;
+  EXPECT_TRUE(t.untouched());
+}
+
+TEST(TexturePolygonMeshErrors, FixedPairOnNoFace)
+{
+  Mesh mesh = np_test::load_mesh("cube_quad");
+  const Vertex lonely = mesh.add_vertex(Point_3(5, 5, 5));
+  Options options;
+  options.fixed_pair = std::make_pair(lonely, *vertices(mesh).begin());
+  Textured t(mesh, options);
+  EXPECT_EQ(t.status, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_NE(t.report.message.find("no face"), std::string::npos);
+  EXPECT_TRUE(t.untouched());
+}
+
+} // namespace
