@@ -6,14 +6,14 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_distortion.h>
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include "textured_obj_writer.h"
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -31,35 +31,43 @@ int main(int argc, char** argv)
     std::cerr << "error: cannot read a polygon mesh from " << input << '\n';
     return 1;
   }
-  if(!CGAL::is_triangle_mesh(mesh))
-    CGAL::Polygon_mesh_processing::triangulate_faces(mesh); // step 1: adds no vertex
-  auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component").first;
-  const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(mesh, component);
 
   auto uv = mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_2>("v:uv").first;
-  auto has_uv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:has_uv", false).first;
-  SMP::Norm_preserving_parameterizer_3<Mesh> parameterizer;
-  parameterizer.set_automatic_fixed_pair();
-  const SMP::Error_code status = parameterizer.parameterize(
-    mesh, halfedge(*faces(mesh).begin(), mesh), uv, get(CGAL::vertex_index, mesh), has_uv);
-  const SMP::Norm_preserving_report& report = parameterizer.report();
+  SMP::Texture_polygon_mesh_report report;
+  const SMP::Error_code status = SMP::texture_polygon_mesh(mesh, uv, SMP::Texture_polygon_mesh_options<Mesh>(), &report);
   if(status != SMP::OK)
   {
     std::cerr << "error: " << SMP::error_message(status) << ": " << report.message << '\n';
     return 1;
   }
+  const std::size_t faces = num_faces(mesh);
   if(!np_examples::write_textured_obj(output, mesh, uv))
   {
     std::cerr << "error: cannot write " << output << ".obj/.mtl/.png\n";
     return 1;
   }
 
-  const SMP::Parameterization_distortion d = SMP::measure_distortion(mesh, uv, has_uv);
-  std::cout << input << ": " << report.vertices << " vertices, " << report.edges << " edges"
-            << (components > 1 ? " (first of " + std::to_string(components) + " components)" : "") << '\n'
-            << "objective (Eq. 3): " << report.initial_objective << " at the guess -> " << report.objective
-            << ", " << report.active_constraints << "/" << report.constraints << " sign constraints active, "
-            << report.solver_iterations << " solver iterations, KKT residual " << report.kkt_residual << '\n'
+  std::size_t active = 0, constraints = 0, iterations = 0;
+  double initial = 0, kkt = 0;
+  for(const SMP::Norm_preserving_report& r : report.reports)
+  {
+    active += r.active_constraints;
+    constraints += r.constraints;
+    iterations = std::max<std::size_t>(iterations, std::size_t(r.solver_iterations));
+    initial += r.initial_objective;
+    kkt = std::max(kkt, r.kkt_residual);
+  }
+  // Distortion is measured on triangles; triangulating adds no vertex, so uvs stay valid.
+  CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+  auto on_face = mesh.add_property_map<Mesh::Vertex_index, bool>("v:on_face", true).first;
+  for(auto v : vertices(mesh))
+    put(on_face, v, !mesh.is_isolated(v));
+  const SMP::Parameterization_distortion d = SMP::measure_distortion(mesh, uv, on_face);
+  std::cout << input << ": " << num_vertices(mesh) << " vertices, " << faces << " faces, "
+            << report.components << " component(s)\n"
+            << "objective (Eq. 3): " << initial << " at the guess -> " << report.objective << ", "
+            << active << "/" << constraints << " sign constraints active, " << iterations
+            << " solver iterations, KKT residual " << kkt << '\n'
             << "time: " << report.seconds << " s\n"
             << "distortion: edge-length error " << d.edge_length_error << " (L1 " << d.l1_edge_length_error
             << "), flipped faces " << d.flipped_faces << "/" << d.faces << " ("

@@ -15,7 +15,8 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgNormPreservingParameterization
-/// Distortion of a uv map, over the faces and edges whose vertices all have a uv.
+/// Distortion of a uv map of a triangle mesh, over the faces and edges whose vertices all
+/// have a uv.
 /// Edge-length errors are measured after scaling the uv map by the one factor that best fits
 /// the 3D lengths (least squares), relative to the mean 3D edge length.
 struct Parameterization_distortion
