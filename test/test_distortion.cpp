@@ -44,7 +44,13 @@ TEST(Distortion, ASimilarityHasNoEdgeLengthError)
   const auto d = m.measure();
   EXPECT_EQ(d.faces, 1u);
   EXPECT_EQ(d.edges, 3u);
+  EXPECT_NEAR(d.scale, 0.5, 1e-15);
   EXPECT_NEAR(d.edge_length_error, 0, 1e-15);
+  EXPECT_NEAR(d.l1_objective, 0, 1e-28);
+  EXPECT_NEAR(d.max_angle_distortion, 0, 1e-12);
+  EXPECT_NEAR(d.area_distortion, 0, 1e-15);
+  EXPECT_NEAR(d.l2_stretch, 1, 1e-15);
+  EXPECT_NEAR(d.linf_stretch, 1, 1e-15);
   EXPECT_EQ(d.flipped_faces, 0u);
   EXPECT_EQ(d.degenerate_uv_faces, 0u);
 }
@@ -65,6 +71,25 @@ TEST(Distortion, AnAffineStretchMatchesTheHandComputedError)
   double squares1 = 0;
   for(int k = 0; k < 3; ++k) squares1 += (s1 * T1[k] - L1[k]) * (s1 * T1[k] - L1[k]);
   EXPECT_NEAR(m.measure().l1_edge_length_error, std::sqrt(squares1 / 3) / (4. / 3), 1e-14);
+  EXPECT_NEAR(m.measure().l1_objective, squares1, 1e-14);
+}
+
+TEST(Distortion, AnAffineStretchMatchesTheHandComputedAnglesAreasAndStretch)
+{
+  Mapped m; // u = 2x, v = y on a right isosceles triangle
+  m.add(0, 0, 0, 0, 0); m.add(1, 0, 0, 2, 0); m.add(0, 1, 0, 0, 1);
+  m.mesh.add_face(m.v[0], m.v[1], m.v[2]);
+  const auto d = m.measure();
+  const double s = (3 + std::sqrt(10.)) / 10;
+  // Corner angles 90, 45, 45 become 90, atan(1/2), atan(2).
+  const double pi = 3.14159265358979323846, off = 45 - std::atan(0.5) * 180 / pi;
+  EXPECT_NEAR(d.max_angle_distortion, off, 1e-12);
+  EXPECT_NEAR(d.mean_angle_distortion, 2 * off / 3, 1e-12);
+  // Scaled uv area s^2 against 3D area 1/2.
+  EXPECT_NEAR(d.area_distortion, std::abs(std::log(2 * s * s)), 1e-12);
+  // The map uv -> 3D is diag(1 / 2s, 1 / s): singular values 1/s and 1/(2s).
+  EXPECT_NEAR(d.linf_stretch, 1 / s, 1e-12);
+  EXPECT_NEAR(d.l2_stretch, std::sqrt(5. / 8) / s, 1e-12);
 }
 
 TEST(Distortion, CountsAFlippedFaceAndItsArea)

@@ -3,99 +3,181 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgNormPreservingParameterization
-/// Distortion of a uv map of a triangle mesh, over the faces and edges whose vertices all
-/// have a uv.
-/// Edge-length errors are measured after scaling the uv map by the one factor that best fits
-/// the 3D lengths (least squares), relative to the mean 3D edge length.
+/// Distortion of a uv map of a triangle mesh, over the faces and edges whose vertices all have
+/// a uv. Every measure but the flip counts is taken after scaling the uv map by the one factor
+/// that best fits the 3D edge lengths (least squares; the L1 measures use the factor that best
+/// fits the L1 lengths), so that it does not depend on the scale of the map.
 struct Parameterization_distortion
 {
   std::size_t faces = 0;               ///< faces measured
   std::size_t edges = 0;               ///< edges measured
-  double edge_length_error = 0;        ///< RMS of (s ||uv_i - uv_j||_2 - ||P_i - P_j||_2) / mean 3D length
-  double l1_edge_length_error = 0;     ///< RMS of (s (|du| + |dv|) - ||P_i - P_j||_1) / mean 3D L1 length
+  double scale = 0;                    ///< the best-fitting factor applied to the uvs
+  double edge_length_error = 0;        ///< RMS of (s ||uv_i - uv_j||_2 - ||P_i - P_j||_2) over the mean 3D length
+  double l1_edge_length_error = 0;     ///< RMS of (s1 (|du| + |dv|) - ||P_i - P_j||_1) over the mean 3D L1 length
+  double l1_objective = 0;             ///< the paper's Eq. 3, sum of (s1 (|du| + |dv|) - ||P_i - P_j||_1)^2
+  double mean_angle_distortion = 0;    ///< mean |3D angle - uv angle| over face corners, in degrees
+  double max_angle_distortion = 0;     ///< largest |3D angle - uv angle|, in degrees
+  double area_distortion = 0;          ///< RMS over faces of log(uv area / 3D area), non-degenerate faces
+  double l2_stretch = 0;               ///< Sander et al.'s L2 stretch (1 is ideal), non-degenerate faces
+  double linf_stretch = 0;             ///< Sander et al.'s L-infinity stretch (1 is ideal)
   std::size_t flipped_faces = 0;       ///< faces oriented against the orientation of most of the 3D area
   double flipped_area_fraction = 0;    ///< 3D area of those faces over the total 3D area
   std::size_t degenerate_uv_faces = 0; ///< faces of zero uv area
 };
 
+namespace internal {
+namespace Norm_preserving {
+
+using Vec3 = std::array<double, 3>;
+inline Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double angle_between(const Vec3& a, const Vec3& b)
+{
+  return std::atan2(std::sqrt(dot(cross(a, b), cross(a, b))), dot(a, b));
+}
+
+// Least-squares factor s minimizing sum (s t - l)^2 and the resulting RMS error over the mean l.
+struct Scale_fit
+{
+  double ll = 0, lt = 0, tt = 0, l = 0;
+  std::size_t count = 0;
+  void add(double length, double uv_length)
+  {
+    ll += length * length; lt += length * uv_length; tt += uv_length * uv_length; l += length; ++count;
+  }
+  double scale() const { return tt > 0 ? lt / tt : 0.; }
+  double sum_of_squares() const { const double s = scale(); return (std::max)(0., ll - 2 * s * lt + s * s * tt); }
+  double relative_rms() const
+  {
+    return count > 0 && l > 0 ? std::sqrt(sum_of_squares() / double(count)) / (l / double(count)) : 0.;
+  }
+};
+
+} // namespace Norm_preserving
+} // namespace internal
+
 /// \ingroup PkgNormPreservingParameterization
 /// measures the distortion of `uvmap` on `mesh`; `vpmap` tells which vertices have a uv.
-/// \tparam TriangleMesh a model of `FaceGraph` with an internal `vertex_point` map
+/// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` from vertices to a 2D point type
 /// \tparam VertexParameterizedMap a model of `ReadablePropertyMap` from vertices to `bool`
-template <typename TriangleMesh, typename VertexUVMap, typename VertexParameterizedMap>
+/// \param np optional `vertex_point_map` (default: the internal point map of `mesh`)
+template <typename TriangleMesh, typename VertexUVMap, typename VertexParameterizedMap,
+          typename NamedParameters = parameters::Default_named_parameters>
 Parameterization_distortion measure_distortion(const TriangleMesh& mesh, VertexUVMap uvmap,
-                                               VertexParameterizedMap vpmap)
+                                               VertexParameterizedMap vpmap,
+                                               const NamedParameters& np = parameters::default_values())
 {
+  namespace NP = internal::Norm_preserving;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
-  Parameterization_distortion d;
-  const auto ppmap = get(CGAL::vertex_point, mesh);
-  auto xyz = [&](auto v) -> std::array<double, 3> {
+  const auto ppmap = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
+  auto xyz = [&](auto v) -> NP::Vec3 {
     const auto& p = get(ppmap, v);
     return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
   };
-  auto uv = [&](auto v) -> std::array<double, 2> {
+  auto uv = [&](auto v) -> NP::Vec3 {
     const auto& p = get(uvmap, v);
-    return {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+    return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), 0.};
   };
 
-  // Best scales s = sum(l3 l2) / sum(l2^2), then RMS errors by expanding the squares.
-  double l2_33 = 0, l2_32 = 0, l2_22 = 0, l2_sum = 0;
-  double l1_33 = 0, l1_32 = 0, l1_22 = 0, l1_sum = 0;
+  Parameterization_distortion d;
+  NP::Scale_fit l2_fit, l1_fit;
   for(auto e : edges(mesh))
   {
     const halfedge_descriptor h = halfedge(e, mesh);
     const auto i = source(h, mesh), j = target(h, mesh);
     if(!get(vpmap, i) || !get(vpmap, j)) continue;
-    const auto p = xyz(i), q = xyz(j);
-    const auto a = uv(i), b = uv(j);
-    const double du = a[0] - b[0], dv = a[1] - b[1];
-    const double L2 = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-    const double L1 = std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]);
-    const double t2 = std::sqrt(du * du + dv * dv), t1 = std::abs(du) + std::abs(dv);
-    l2_33 += L2 * L2; l2_32 += L2 * t2; l2_22 += t2 * t2; l2_sum += L2;
-    l1_33 += L1 * L1; l1_32 += L1 * t1; l1_22 += t1 * t1; l1_sum += L1;
-    ++d.edges;
+    const NP::Vec3 p = NP::minus(xyz(i), xyz(j)), t = NP::minus(uv(i), uv(j));
+    l2_fit.add(std::sqrt(NP::dot(p, p)), std::sqrt(NP::dot(t, t)));
+    l1_fit.add(std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]), std::abs(t[0]) + std::abs(t[1]));
   }
-  auto rms = [&](double s33, double s32, double s22, double sum) {
-    if(d.edges == 0 || !(sum > 0)) return 0.;
-    const double s = s22 > 0 ? s32 / s22 : 0.;
-    const double mean = sum / double(d.edges);
-    return std::sqrt((std::max)(0., s33 - 2 * s * s32 + s * s * s22) / double(d.edges)) / mean;
-  };
-  d.edge_length_error = rms(l2_33, l2_32, l2_22, l2_sum);
-  d.l1_edge_length_error = rms(l1_33, l1_32, l1_22, l1_sum);
+  d.edges = l2_fit.count;
+  d.scale = l2_fit.scale();
+  d.edge_length_error = l2_fit.relative_rms();
+  d.l1_edge_length_error = l1_fit.relative_rms();
+  d.l1_objective = l1_fit.sum_of_squares();
 
-  double positive_area = 0, negative_area = 0, total_area = 0;
-  std::size_t positive = 0, negative = 0;
+  const double s = d.scale;
+  double positive_area = 0, negative_area = 0, total_area = 0, angle_sum = 0;
+  double log_area_squares = 0, stretch_squares = 0, uv_area_sum = 0;
+  std::size_t positive = 0, negative = 0, measured = 0;
   for(auto f : faces(mesh))
   {
     const halfedge_descriptor h = halfedge(f, mesh);
-    const auto v0 = source(h, mesh), v1 = target(h, mesh), v2 = target(next(h, mesh), mesh);
-    if(!get(vpmap, v0) || !get(vpmap, v1) || !get(vpmap, v2)) continue;
-    const auto a = uv(v0), b = uv(v1), c = uv(v2);
-    const double uv_area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    const auto p = xyz(v0), q = xyz(v1), r = xyz(v2);
-    const std::array<double, 3> e1 = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, e2 = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-    const std::array<double, 3> n = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    const double area = 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    total_area += area;
+    const std::array<decltype(source(h, mesh)), 3> v = {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)};
+    if(!get(vpmap, v[0]) || !get(vpmap, v[1]) || !get(vpmap, v[2])) continue;
+    std::array<NP::Vec3, 3> q, t;
+    for(int k = 0; k < 3; ++k)
+    {
+      q[k] = xyz(v[k]);
+      t[k] = uv(v[k]);
+      for(int c = 0; c < 2; ++c) t[k][c] *= s;
+    }
+    const NP::Vec3 n = NP::cross(NP::minus(q[1], q[0]), NP::minus(q[2], q[0]));
+    const double area = 0.5 * std::sqrt(NP::dot(n, n));
+    const double uv_area = 0.5 * NP::cross(NP::minus(t[1], t[0]), NP::minus(t[2], t[0]))[2];
     ++d.faces;
+    total_area += area;
     if(uv_area > 0) { ++positive; positive_area += area; }
     else if(uv_area < 0) { ++negative; negative_area += area; }
-    else ++d.degenerate_uv_faces;
+    else { ++d.degenerate_uv_faces; continue; }
+
+    for(int k = 0; k < 3; ++k)
+    {
+      const int a = (k + 1) % 3, b = (k + 2) % 3;
+      const double difference = std::abs(NP::angle_between(NP::minus(q[a], q[k]), NP::minus(q[b], q[k])) -
+                                         NP::angle_between(NP::minus(t[a], t[k]), NP::minus(t[b], t[k])));
+      const double degrees = difference * 180. / 3.14159265358979323846;
+      angle_sum += degrees;
+      d.max_angle_distortion = (std::max)(d.max_angle_distortion, degrees);
+    }
+    if(area > 0)
+    {
+      const double log_ratio = std::log(std::abs(uv_area) / area);
+      log_area_squares += log_ratio * log_ratio;
+    }
+    // Sander et al. 2001: singular values of the Jacobian of the map uv -> 3D.
+    const double two_a = 2 * uv_area;
+    NP::Vec3 Ss, St;
+    for(int c = 0; c < 3; ++c)
+    {
+      Ss[c] = (q[0][c] * (t[1][1] - t[2][1]) + q[1][c] * (t[2][1] - t[0][1]) + q[2][c] * (t[0][1] - t[1][1])) / two_a;
+      St[c] = (q[0][c] * (t[2][0] - t[1][0]) + q[1][c] * (t[0][0] - t[2][0]) + q[2][c] * (t[1][0] - t[0][0])) / two_a;
+    }
+    const double a = NP::dot(Ss, Ss), b = NP::dot(Ss, St), c = NP::dot(St, St);
+    const double largest = std::sqrt(0.5 * ((a + c) + std::sqrt((a - c) * (a - c) + 4 * b * b)));
+    stretch_squares += 0.5 * (a + c) * std::abs(uv_area);
+    uv_area_sum += std::abs(uv_area);
+    d.linf_stretch = (std::max)(d.linf_stretch, largest);
+    ++measured;
+  }
+  if(measured > 0)
+  {
+    d.mean_angle_distortion = angle_sum / double(3 * measured);
+    d.area_distortion = std::sqrt(log_area_squares / double(measured));
+    d.l2_stretch = std::sqrt(stretch_squares / uv_area_sum);
   }
   const bool positive_is_reference = positive_area >= negative_area;
   d.flipped_faces = positive_is_reference ? negative : positive;
