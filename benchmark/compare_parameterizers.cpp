@@ -1,113 +1,390 @@
-// Runs the norm-preserving parameterizer and CGAL's LSCM on the same real meshes, in one
-// program, and prints a Markdown table: sizes, objective before/after the QP, active sign
-// constraints, times (median of several runs) and edge-length distortion.
+// The comparison harness: for a list of meshes, runs ours (each initial guess, no cut) and
+// CGAL's LSCM, ARAP, discrete conformal, discrete authalic, mean value coordinates and
+// iterative authalic (on a disk: the mesh cut by cut_to_disk where it is not one), each in its
+// own process, and prints one table as Markdown (stdout) and CSV (--csv), with a plot of time
+// against vertex count (--svg). Progress goes to stderr.
 //
-// Usage: compare_parameterizers [runs] [mesh names...]   (meshes from libcgal-demo)
+// Usage: compare_parameterizers [--runs N] [--time-limit S] [--csv FILE] [--svg FILE]
+//                               [--methods a,b,...] mesh...
+// A mesh is a name of CGAL's collection (libcgal-demo), a path, or either followed by *K for
+// K steps of Loop subdivision (mushroom*3).
+
+#include "harness_process.h"
+#include "time_plot.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/Parameterization_distortion.h>
-#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/boost/graph/Seam_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <CGAL/Surface_mesh_parameterization/ARAP_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_authalic_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Iterative_authalic_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Combination_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/Graph_based_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/cut_to_disk.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 using Kernel = CGAL::Simple_cartesian<double>;
+using Point_2 = Kernel::Point_2;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Vertex = Mesh::Vertex_index;
+using Halfedge = Mesh::Halfedge_index;
+using Seam_edge_map = Mesh::Property_map<Mesh::Edge_index, bool>;
+using Seam_vertex_map = Mesh::Property_map<Vertex, bool>;
+using Seam_mesh = CGAL::Seam_mesh<Mesh, Seam_edge_map, Seam_vertex_map>;
 
+const std::vector<std::string> all_methods = {
+  "ours-xy", "ours-combination", "ours-graph", "lscm", "arap",
+  "discrete-conformal", "discrete-authalic", "mean-value", "iterative-authalic"};
+
+struct Options
+{
+  int runs = 3;
+  double time_limit = 600;
+  std::string csv, svg;
+  std::vector<std::string> methods = all_methods;
+  std::vector<std::string> meshes;
+};
+
+// ---------------------------------------------------------------------------- the mesh
+
+Mesh load(const std::string& spec)
+{
+  const std::size_t star = spec.find('*');
+  const std::string name = spec.substr(0, star);
+  const int steps = star == std::string::npos ? 0 : std::stoi(spec.substr(star + 1));
+  const std::string path = name.find('.') != std::string::npos || name.find('/') != std::string::npos
+                             ? name : std::string(NP_MESH_DIR) + "/" + name + ".off";
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(path, mesh) || is_empty(mesh))
+    throw std::runtime_error("cannot read " + path);
+  if(!CGAL::is_triangle_mesh(mesh))
+    CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+  if(steps > 0)
+    CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(steps));
+  return mesh;
+}
+
+struct Topology
+{
+  std::size_t components = 0, borders = 0;
+  long genus = 0;
+  std::string text() const
+  {
+    std::string t = borders == 0 ? "closed" : borders == 1 && genus == 0 ? "disk" : std::to_string(borders) + " borders";
+    if(genus > 0 || borders == 0) t += " g=" + std::to_string(genus);
+    if(components > 1) t += ", " + std::to_string(components) + " components";
+    return t;
+  }
+};
+
+Topology topology(const Mesh& mesh)
+{
+  Topology t;
+  Mesh copy = mesh;
+  auto id = copy.add_property_map<Mesh::Face_index, std::size_t>("f:id").first;
+  t.components = CGAL::Polygon_mesh_processing::connected_components(copy, id);
+  auto seen = copy.add_property_map<Halfedge, bool>("h:seen", false).first;
+  for(Halfedge h : halfedges(copy))
+    if(is_border(h, copy) && !get(seen, h))
+    {
+      ++t.borders;
+      for(Halfedge g : CGAL::halfedges_around_face(h, copy)) put(seen, g, true);
+    }
+  // Euler: V - E + F = 2c - 2g - b over all components (genus summed).
+  const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+  t.genus = (2 * long(t.components) - long(t.borders) - chi) / 2;
+  return t;
+}
+
+// ---------------------------------------------------------------------------- one measurement
+
+struct Measurement
+{
+  double seconds = 0, peak_mib = 0, seam_length = 0;
+  SMP::Parameterization_distortion d;
+
+  std::string serialize() const
+  {
+    std::ostringstream out;
+    out.precision(17);
+    out << seconds << ' ' << peak_mib << ' ' << seam_length << ' ' << d.faces << ' ' << d.edges << ' '
+        << d.edge_length_error << ' ' << d.l1_edge_length_error << ' ' << d.l1_objective << ' '
+        << d.mean_angle_distortion << ' ' << d.max_angle_distortion << ' ' << d.area_distortion << ' '
+        << d.l2_stretch << ' ' << d.linf_stretch << ' ' << d.flipped_faces << ' ' << d.flipped_area_fraction
+        << ' ' << d.degenerate_uv_faces;
+    return out.str();
+  }
+  static Measurement parse(const std::string& text)
+  {
+    Measurement m;
+    std::istringstream in(text);
+    in >> m.seconds >> m.peak_mib >> m.seam_length >> m.d.faces >> m.d.edges >> m.d.edge_length_error
+       >> m.d.l1_edge_length_error >> m.d.l1_objective >> m.d.mean_angle_distortion >> m.d.max_angle_distortion
+       >> m.d.area_distortion >> m.d.l2_stretch >> m.d.linf_stretch >> m.d.flipped_faces
+       >> m.d.flipped_area_fraction >> m.d.degenerate_uv_faces;
+    return m;
+  }
+};
+
+// Median time of up to `runs` calls of `f` (a single call when one takes over 2 s); `f`
+// returns an error message, empty on success.
 template <typename F>
 double median_seconds(int runs, F&& f)
 {
-  std::vector<double> t;
+  std::vector<double> times;
   for(int r = 0; r < runs; ++r)
   {
     const auto start = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const std::string error = f();
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if(!error.empty()) throw std::runtime_error(error);
+    if(times.back() > 2) break;
   }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+template <typename InitialGuess>
+Measurement measure_ours(Mesh& mesh, int runs)
+{
+  auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv").first;
+  SMP::Texture_polygon_mesh_options<Mesh, InitialGuess> options;
+  options.texture_fit = SMP::NO_FIT;
+  Measurement m;
+  np_benchmark::reset_peak_memory();
+  m.seconds = median_seconds(runs, [&] {
+    SMP::Texture_polygon_mesh_report report;
+    return SMP::texture_polygon_mesh(mesh, uv, options, &report) == SMP::OK ? std::string() : report.message;
+  });
+  m.peak_mib = np_benchmark::peak_memory_mib();
+  auto on_face = mesh.add_property_map<Vertex, bool>("v:on_face").first;
+  for(Vertex v : vertices(mesh)) put(on_face, v, !mesh.is_isolated(v));
+  m.d = SMP::measure_distortion(mesh, uv, on_face);
+  return m;
+}
+
+// A CGAL parameterizer on the component of the first face, cut to a disk where needed.
+template <typename Parameterize>
+Measurement measure_on_disk(Mesh& mesh, const Topology& topology, int runs, Parameterize&& parameterize)
+{
+  Seam_edge_map seam_edges = mesh.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+  Seam_vertex_map seam_vertices = mesh.add_property_map<Vertex, bool>("v:seam", false).first;
+  Seam_mesh seam_mesh(mesh, seam_edges, seam_vertices);
+  Measurement m;
+  const Halfedge first = halfedge(*faces(mesh).begin(), mesh);
+  const bool is_disk = topology.components == 1 && topology.borders == 1 && topology.genus == 0;
+  if(!is_disk)
+  {
+    const SMP::Disk_cut_result cut = SMP::cut_to_disk(seam_mesh, first);
+    if(cut.status != SMP::OK) throw std::runtime_error("cut: " + cut.message);
+    m.seam_length = cut.seam_length;
+  }
+  typename boost::graph_traits<Seam_mesh>::halfedge_descriptor border;
+  bool found = false;
+  for(auto h : halfedges(seam_mesh))
+    if(is_border(h, seam_mesh)) { border = h; found = true; break; }
+  if(!found) throw std::runtime_error("no border after the cut");
+
+  auto uv = mesh.add_property_map<Halfedge, Point_2>("h:uv").first;           // seam-mesh vertex -> uv
+  auto done = mesh.add_property_map<Halfedge, bool>("h:done", false).first;    // seam-mesh vertex -> has uv
+  auto index = get(CGAL::dynamic_vertex_property_t<int>(), seam_mesh);
+  SMP::internal::fill_index_map_of_cc(border, seam_mesh, index);
+  np_benchmark::reset_peak_memory();
+  m.seconds = median_seconds(runs, [&] {
+    const SMP::Error_code status = parameterize(seam_mesh, border, uv, index, done);
+    return status == SMP::OK ? std::string() : std::string(SMP::error_message(status));
+  });
+  m.peak_mib = np_benchmark::peak_memory_mib();
+  m.d = SMP::measure_distortion(seam_mesh, uv, done);
+  return m;
+}
+
+Measurement measure(const std::string& method, Mesh& mesh, const Topology& t, int runs)
+{
+  using SM = Seam_mesh;
+  if(method == "ours-xy") return measure_ours<SMP::XY_min_max_initial_guess>(mesh, runs);
+  if(method == "ours-combination") return measure_ours<SMP::Combination_initial_guess>(mesh, runs);
+  if(method == "ours-graph") return measure_ours<SMP::Graph_based_initial_guess>(mesh, runs);
+  auto with = [&](auto make) {
+    return measure_on_disk(mesh, t, runs, [&](SM& sm, auto bhd, auto uv, auto index, auto done) {
+      auto parameterizer = make();
+      return parameterizer.parameterize(sm, bhd, uv, index, done);
+    });
+  };
+  if(method == "lscm") return with([] { return SMP::LSCM_parameterizer_3<SM>(); });
+  if(method == "arap") return with([] { return SMP::ARAP_parameterizer_3<SM>(); });
+  if(method == "discrete-conformal") return with([] { return SMP::Discrete_conformal_map_parameterizer_3<SM>(); });
+  if(method == "discrete-authalic") return with([] { return SMP::Discrete_authalic_parameterizer_3<SM>(); });
+  if(method == "mean-value") return with([] { return SMP::Mean_value_coordinates_parameterizer_3<SM>(); });
+  if(method == "iterative-authalic")
+    return measure_on_disk(mesh, t, runs, [&](SM& sm, auto bhd, auto uv, auto index, auto done) {
+      SMP::Iterative_authalic_parameterizer_3<SM> parameterizer; // not copyable
+      return parameterizer.parameterize(sm, bhd, uv, index, done);
+    });
+  throw std::runtime_error("unknown method " + method);
+}
+
+// ---------------------------------------------------------------------------- the table
+
+struct Row
+{
+  std::string mesh, topology, method, status;
+  std::size_t vertices = 0, faces = 0;
+  Measurement m;
+};
+
+std::string number(double x, const char* format = "%.4g")
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, x);
+  return buffer;
+}
+
+std::vector<std::string> cells(const Row& r)
+{
+  const bool ok = r.status == "ok";
+  auto value = [&](double x, const char* format = "%.4g") { return ok ? number(x, format) : std::string(); };
+  const auto& d = r.m.d;
+  return {r.mesh, std::to_string(r.vertices), std::to_string(r.faces), r.topology, r.method, r.status,
+          value(r.m.seconds, "%.4f"), value(r.m.peak_mib, "%.1f"), value(d.edge_length_error),
+          value(d.l1_edge_length_error), value(d.l1_objective), value(d.mean_angle_distortion, "%.2f"),
+          value(d.max_angle_distortion, "%.1f"), value(d.area_distortion), value(d.l2_stretch),
+          value(d.linf_stretch), ok ? std::to_string(d.flipped_faces) : "", value(d.flipped_area_fraction, "%.3f"),
+          ok ? std::to_string(d.degenerate_uv_faces) : "", value(r.m.seam_length)};
+}
+
+const std::vector<std::string> header = {
+  "mesh", "vertices", "faces", "topology", "method", "status", "seconds", "peak MiB", "edge error",
+  "L1 edge error", "Eq. 3", "mean angle (deg)", "max angle (deg)", "area (RMS log)", "L2 stretch",
+  "Linf stretch", "flipped", "flipped area", "degenerate", "seam length"};
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if(i + 1 >= argc) throw std::runtime_error(a + " needs a value");
+      return argv[++i];
+    };
+    if(a == "--runs") o.runs = std::max(1, std::stoi(next()));
+    else if(a == "--time-limit") o.time_limit = std::stod(next());
+    else if(a == "--csv") o.csv = next();
+    else if(a == "--svg") o.svg = next();
+    else if(a == "--methods")
+    {
+      o.methods.clear();
+      std::stringstream list(next());
+      for(std::string m; std::getline(list, m, ',');) o.methods.push_back(m);
+    }
+    else if(a == "--help" || a == "-h")
+    {
+      std::cout << "compare_parameterizers [--runs N] [--time-limit S] [--csv FILE] [--svg FILE] "
+                   "[--methods a,b,...] mesh...\nmethods:";
+      for(const auto& m : all_methods) std::cout << ' ' << m;
+      std::cout << "\nmesh: a name of CGAL's collection, a path, or either with *K for K Loop subdivisions\n";
+      std::exit(0);
+    }
+    else o.meshes.push_back(a);
+  }
+  if(o.meshes.empty())
+    o.meshes = {"nefertiti", "mushroom", "cow", "knot1", "eight", "holes"};
+  return o;
 }
 
 int main(int argc, char** argv)
 {
-  const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
-  std::vector<std::string> names(argv + std::min(argc, 2), argv + argc);
-  if(names.empty())
-    names = {"nefertiti", "mushroom", "cow", "camel", "knot1", "eight", "elephant", "holes", "lion", "bunny00"};
+  Options options;
+  try { options = parse(argc, argv); }
+  catch(const std::exception& e) { std::cerr << "error: " << e.what() << '\n'; return 2; }
 
-  std::printf("| mesh | vertices | borders | objective at guess | objective | active / constraints | KKT residual "
-              "| ours (s) | edge error | LSCM (s) | LSCM edge error | LSCM / ours |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for(const std::string& name : names)
+  std::vector<Row> rows;
+  for(const std::string& spec : options.meshes)
   {
-    Mesh mesh;
-    if(!CGAL::IO::read_polygon_mesh(std::string(NP_MESH_DIR) + "/" + name + ".off", mesh))
+    Row base;
+    base.mesh = spec;
+    try
     {
-      std::cerr << name << ": cannot read\n";
+      const Mesh mesh = load(spec);
+      base.vertices = num_vertices(mesh);
+      base.faces = num_faces(mesh);
+      base.topology = topology(mesh).text();
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << spec << ": " << e.what() << '\n';
+      base.status = e.what();
+      rows.push_back(base);
       continue;
     }
-    std::cerr << name << ": norm-preserving\n";
-    auto uv = mesh.add_property_map<Vertex, Kernel::Point_2>("v:uv").first;
-    auto has_uv = mesh.add_property_map<Vertex, bool>("v:has_uv", false).first;
-    SMP::Norm_preserving_parameterizer_3<Mesh> ours;
-    ours.set_automatic_fixed_pair();
-    SMP::Error_code status = SMP::OK;
-    const double t_ours = median_seconds(runs, [&] {
-      status = ours.parameterize(mesh, *halfedges(mesh).begin(), uv, get(CGAL::vertex_index, mesh), has_uv);
-    });
-    const SMP::Norm_preserving_report report = ours.report();
-    const double ours_error = SMP::measure_distortion(mesh, uv, has_uv).edge_length_error;
+    for(const std::string& method : options.methods)
+    {
+      std::cerr << spec << " (" << base.vertices << " vertices): " << method << "...\n";
+      Row row = base;
+      row.method = method;
+      const np_benchmark::Child_result result = np_benchmark::run_in_child([&] {
+        Mesh mesh = load(spec);
+        return measure(method, mesh, topology(mesh), options.runs).serialize();
+      }, options.time_limit);
+      row.status = result.status;
+      if(result.status == "ok") row.m = Measurement::parse(result.payload);
+      std::cerr << "  " << row.status << (row.status == "ok" ? ", " + number(row.m.seconds) + " s" : "") << '\n';
+      rows.push_back(row);
+    }
+  }
 
-    std::size_t borders = 0;
-    Mesh::Halfedge_index border = Mesh::null_halfedge();
-    auto seen = mesh.add_property_map<Mesh::Halfedge_index, bool>("h:seen", false).first;
-    for(auto h : halfedges(mesh))
-      if(is_border(h, mesh) && !get(seen, h))
-      {
-        ++borders;
-        if(border == Mesh::null_halfedge()) border = h;
-        for(auto g : CGAL::halfedges_around_face(h, mesh)) put(seen, g, true);
-      }
-    std::string lscm_time = "needs a border", lscm_error = "-", ratio = "-";
-    if(border != Mesh::null_halfedge())
+  std::cout << '|';
+  for(const auto& h : header) std::cout << ' ' << h << " |";
+  std::cout << "\n|";
+  for(std::size_t i = 0; i < header.size(); ++i) std::cout << "---|";
+  std::cout << '\n';
+  for(const Row& r : rows)
+  {
+    std::cout << '|';
+    for(const auto& c : cells(r)) std::cout << ' ' << c << " |";
+    std::cout << '\n';
+  }
+  if(!options.csv.empty())
+  {
+    std::ofstream csv(options.csv);
+    for(std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << header[i];
+    csv << '\n';
+    for(const Row& r : rows)
     {
-      std::cerr << name << ": LSCM\n";
-      auto lscm_uv = mesh.add_property_map<Vertex, Kernel::Point_2>("v:lscm_uv").first;
-      SMP::Error_code lscm_status = SMP::OK;
-      const double t_lscm = median_seconds(runs, [&] {
-        lscm_status = SMP::parameterize(mesh, SMP::LSCM_parameterizer_3<Mesh>(), border, lscm_uv);
-      });
-      char buffer[64];
-      std::snprintf(buffer, sizeof buffer, "%.3f", t_lscm); lscm_time = buffer;
-      if(lscm_status == SMP::OK)
-      {
-        auto all = mesh.add_property_map<Vertex, bool>("v:all", true).first;
-        std::snprintf(buffer, sizeof buffer, "%.4f", SMP::measure_distortion(mesh, lscm_uv, all).edge_length_error);
-        lscm_error = buffer;
-      }
-      else lscm_error = SMP::error_message(lscm_status);
-      std::snprintf(buffer, sizeof buffer, "%.1fx", t_lscm / t_ours); ratio = buffer;
+      const auto c = cells(r);
+      for(std::size_t i = 0; i < c.size(); ++i) csv << (i ? "," : "") << '"' << c[i] << '"';
+      csv << '\n';
     }
-    if(status != SMP::OK)
-    {
-      std::printf("| %s | %zu | %zu | failed: %s |\n", name.c_str(), std::size_t(num_vertices(mesh)), borders, report.message.c_str());
-      continue;
-    }
-    std::printf("| %s | %zu | %zu | %.6g | %.10g | %zu / %zu | %.1e | %.3f | %.4f | %s | %s | %s |\n",
-                name.c_str(), report.vertices, borders, report.initial_objective, report.objective,
-                report.active_constraints, report.constraints, report.kkt_residual, t_ours, ours_error,
-                lscm_time.c_str(), lscm_error.c_str(), ratio.c_str());
-    std::fflush(stdout);
+  }
+  if(!options.svg.empty())
+  {
+    std::map<std::string, std::vector<std::pair<double, double> > > series;
+    for(const Row& r : rows)
+      if(r.status == "ok") series[r.method].push_back({double(r.vertices), r.m.seconds});
+    np_benchmark::write_time_plot(options.svg, series);
   }
   return 0;
 }
