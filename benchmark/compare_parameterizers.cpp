@@ -193,19 +193,21 @@ Measurement measure_on_disk(Mesh& mesh, const Topology& topology, int runs, Para
   Seam_vertex_map seam_vertices = mesh.add_property_map<Vertex, bool>("v:seam", false).first;
   Seam_mesh seam_mesh(mesh, seam_edges, seam_vertices);
   Measurement m;
-  const Halfedge first = halfedge(*faces(mesh).begin(), mesh);
+  typename boost::graph_traits<Seam_mesh>::halfedge_descriptor border;
   const bool is_disk = topology.components == 1 && topology.borders == 1 && topology.genus == 0;
-  if(!is_disk)
+  if(is_disk)
+    border = {*std::find_if(halfedges(mesh).begin(), halfedges(mesh).end(),
+                            [&](Halfedge h) { return is_border(h, mesh); }), false};
+  else
   {
-    const SMP::Disk_cut_result cut = SMP::cut_to_disk(seam_mesh, first);
+    const SMP::Disk_cut_result cut = SMP::cut_to_disk(seam_mesh, halfedge(*faces(mesh).begin(), mesh));
     if(cut.status != SMP::OK) throw std::runtime_error("cut: " + cut.message);
     m.seam_length = cut.seam_length;
+    border = cut.border_halfedge;
   }
-  typename boost::graph_traits<Seam_mesh>::halfedge_descriptor border;
-  bool found = false;
-  for(auto h : halfedges(seam_mesh))
-    if(is_border(h, seam_mesh)) { border = h; found = true; break; }
-  if(!found) throw std::runtime_error("no border after the cut");
+  std::vector<typename boost::graph_traits<Seam_mesh>::face_descriptor> disk_faces;
+  CGAL::Polygon_mesh_processing::connected_component(face(opposite(border, seam_mesh), seam_mesh), seam_mesh,
+                                                     std::back_inserter(disk_faces));
 
   auto uv = mesh.add_property_map<Halfedge, Point_2>("h:uv").first;           // seam-mesh vertex -> uv
   auto done = mesh.add_property_map<Halfedge, bool>("h:done", false).first;    // seam-mesh vertex -> has uv
@@ -217,6 +219,9 @@ Measurement measure_on_disk(Mesh& mesh, const Topology& topology, int runs, Para
     return status == SMP::OK ? std::string() : std::string(SMP::error_message(status));
   });
   m.peak_mib = np_benchmark::peak_memory_mib();
+  // The parameterizers mark only the vertices they fixed; every vertex of the disk has a uv.
+  for(auto f : disk_faces)
+    for(auto v : vertices_around_face(halfedge(f, seam_mesh), seam_mesh)) put(done, v, true);
   m.d = SMP::measure_distortion(seam_mesh, uv, done);
   return m;
 }
