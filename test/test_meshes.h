@@ -55,6 +55,26 @@ inline Mesh icosphere()
   return mesh;
 }
 
+// A proper triangle (a, b, c) and, across its edge ab, a face (b, a, a) with a repeated
+// vertex, built halfedge by halfedge (add_face refuses it).
+inline Mesh triangle_and_face_with_a_repeated_vertex()
+{
+  Mesh mesh;
+  const auto a = mesh.add_vertex(Point_3(0, 0, 0)), b = mesh.add_vertex(Point_3(1, 0, 0));
+  const auto c = mesh.add_vertex(Point_3(0, 1, 0));
+  mesh.add_face(a, b, c);
+  const auto ab = mesh.halfedge(a, b);
+  const auto ba = mesh.opposite(ab);
+  const auto loop = mesh.add_edge(); // add_edge(a, a) asserts
+  mesh.set_target(loop, a);
+  mesh.set_target(mesh.opposite(loop), a);
+  const auto f = mesh.add_face();
+  mesh.set_face(ba, f); mesh.set_face(loop, f); mesh.set_face(mesh.opposite(loop), f);
+  mesh.set_next(ba, loop); mesh.set_next(loop, mesh.opposite(loop)); mesh.set_next(mesh.opposite(loop), ba);
+  mesh.set_halfedge(f, ba);
+  return mesh;
+}
+
 } // namespace np_test
 
 #endif

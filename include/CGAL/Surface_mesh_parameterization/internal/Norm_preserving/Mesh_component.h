@@ -41,6 +41,39 @@ struct Mesh_component
   bool has(vertex_descriptor v) const { return get(contains, v); }
 };
 
+// A vertex whose faces form several fans (faces that meet at the vertex only, a "bow tie")
+// would get one uv for unrelated pieces of surface, and the fans would be extracted apart:
+// such a vertex is rejected. Circulating around it crosses the border more than once where
+// the mesh links its fans (Surface_mesh does), and misses faces where it does not: its
+// corners over the whole mesh are counted. O(size of the mesh), like the extraction.
+template <typename TriangleMesh>
+Error_code check_manifold_vertices(const TriangleMesh& mesh, const Mesh_component<TriangleMesh>& component,
+                                   std::string& message)
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  auto corners = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
+  for(vertex_descriptor v : vertices(mesh))
+    put(corners, v, 0);
+  for(auto f : faces(mesh))
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      put(corners, v, get(corners, v) + 1);
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    if(!component.has(v))
+      continue;
+    std::size_t fan = 0, gaps = 0;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh))
+      ++(is_border(h, mesh) ? gaps : fan);
+    if(gaps > 1 || fan != get(corners, v))
+    {
+      message = "a vertex is non-manifold: its faces form several fans that share no edge;"
+                " split it first (Polygon_mesh_processing::duplicate_non_manifold_vertices)";
+      return ERROR_NON_TRIANGULAR_MESH;
+    }
+  }
+  return OK;
+}
+
 // Fills `component` with the component of the face incident to `h` (or to its opposite if
 // `h` is a border halfedge). Returns OK or an error with a message.
 template <typename TriangleMesh>
@@ -110,6 +143,10 @@ Error_code extract_component(TriangleMesh& mesh,
       return ERROR_NON_TRIANGULAR_MESH;
     }
   }
+
+  const Error_code manifold = check_manifold_vertices(mesh, component, message);
+  if(manifold != OK)
+    return manifold;
 
   component.index = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
   component.vertices.clear();

@@ -1,0 +1,519 @@
+// Bad input, as scans, CAD exports and broken files give it: every entry point answers with an
+// error code and a readable message and leaves the caller's uv map bit for bit as it was, or,
+// where the input can be handled, gives a finite result with the properties it should have.
+// Also: two parameterizers on two threads give the uvs of sequential runs, bit for bit.
+
+#include "test_runs.h"
+
+#include <CGAL/Surface_mesh_parameterization/Combination_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/Graph_based_initial_guess.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/property_map.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using np_test::Halfedge;
+using np_test::Mapped_mesh;
+using np_test::Mesh;
+using np_test::Options;
+using np_test::Parameterizer;
+using np_test::Point_2;
+using np_test::Point_3;
+using np_test::sentinel;
+using np_test::Textured;
+using np_test::Vertex;
+using Polygons = std::vector<std::vector<std::size_t> >;
+
+const double nan = std::numeric_limits<double>::quiet_NaN();
+const double inf = std::numeric_limits<double>::infinity();
+
+// `texture_polygon_soup()` on `points` and `polygons`, into a uv vector filled with the sentinel.
+struct Textured_soup
+{
+  std::vector<Point_3> points;
+  Polygons polygons;
+  std::vector<Point_2> uv;
+  SMP::Texture_polygon_mesh_report report;
+  SMP::Error_code status = SMP::OK;
+
+  Textured_soup(std::vector<Point_3> p, Polygons f,
+                const SMP::Texture_polygon_mesh_options<SMP::Norm_preserving_triangle_mesh>& options = {})
+    : points(std::move(p)), polygons(std::move(f)), uv(points.size(), sentinel)
+  {
+    status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv), options, &report);
+  }
+  bool untouched() const
+  {
+    return std::all_of(uv.begin(), uv.end(), [](const Point_2& p) { return p == sentinel; });
+  }
+};
+
+// A failure: the code, a message that says `words`, the uv map exactly as it was.
+template <typename Run>
+void expect_failure(const Run& run, SMP::Error_code code, const std::string& words)
+{
+  EXPECT_EQ(run.status, code) << run.report.message;
+  EXPECT_NE(run.report.message.find(words), std::string::npos) << run.report.message;
+  EXPECT_TRUE(run.untouched());
+}
+
+// A success of the whole-mesh call: every vertex on a face has a finite uv in the unit square.
+void expect_in_unit_square(const Textured& t)
+{
+  ASSERT_EQ(t.status, SMP::OK) << t.report.message;
+  EXPECT_TRUE(t.report.message.empty());
+  for(Vertex v : vertices(t.mesh))
+  {
+    if(t.mesh.is_isolated(v)) continue;
+    const Point_2 p = get(t.uv, v);
+    ASSERT_TRUE(p.x() >= 0 && p.x() <= 1 && p.y() >= 0 && p.y() <= 1) << p;
+  }
+}
+
+// A success of the parameterizer: every vertex of the (single) component marked with a finite
+// uv, and the solution no worse than the transformed guess.
+void expect_solved(const Mapped_mesh& run)
+{
+  ASSERT_EQ(run.status, SMP::OK) << run.report.message;
+  for(Vertex v : vertices(run.mesh))
+  {
+    if(run.mesh.is_isolated(v)) continue;
+    EXPECT_TRUE(get(run.marked, v));
+    EXPECT_TRUE(np_test::is_finite(get(run.uv, v))) << get(run.uv, v);
+  }
+  // No worse than the guess, but for rounding: relative to the objective of all-zero uvs.
+  double zero_uv_objective = 0;
+  for(auto e : edges(run.mesh))
+  {
+    const Point_3 p = run.mesh.point(source(e, run.mesh)), q = run.mesh.point(target(e, run.mesh));
+    zero_uv_objective += CGAL::square(std::abs(p.x() - q.x()) + std::abs(p.y() - q.y()) + std::abs(p.z() - q.z()));
+  }
+  EXPECT_TRUE(std::isfinite(run.report.objective));
+  EXPECT_LE(run.report.objective, run.report.initial_objective + 1e-12 * zero_uv_objective);
+}
+
+Mesh mesh_of(const std::vector<Point_3>& points, const Polygons& polygons)
+{
+  Mesh mesh;
+  for(const Point_3& p : points) mesh.add_vertex(p);
+  for(const auto& polygon : polygons)
+  {
+    std::vector<Vertex> face;
+    for(std::size_t i : polygon) face.push_back(Vertex(Mesh::size_type(i)));
+    if(mesh.add_face(face) == Mesh::null_face()) throw std::runtime_error("mesh_of: a face cannot be added");
+  }
+  return mesh;
+}
+
+Mesh scaled(Mesh mesh, double s)
+{
+  for(Vertex v : vertices(mesh))
+    mesh.point(v) = CGAL::ORIGIN + s * (mesh.point(v) - CGAL::ORIGIN);
+  return mesh;
+}
+
+Halfedge first_halfedge(const Mesh& mesh) { return *halfedges(mesh).begin(); }
+
+// Two triangles that share vertex 0 only.
+const std::vector<Point_3> bow_tie_points = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0),
+                                             Point_3(-1, 0, 0.5), Point_3(-1, -1, 0.5)};
+const Polygons bow_tie_faces = {{0, 1, 2}, {0, 3, 4}};
+
+TEST(BadInput, EmptyMeshAtEveryEntryPoint)
+{
+  Mapped_mesh run{Mesh()};
+  Parameterizer parameterizer;
+  run.parameterize(parameterizer, Mesh::null_halfedge());
+  expect_failure(run, SMP::ERROR_EMPTY_MESH, "no face");
+  expect_failure(Textured(Mesh()), SMP::ERROR_EMPTY_MESH, "no face");
+  expect_failure(Textured_soup({}, {}), SMP::ERROR_EMPTY_MESH, "no face");
+  // Vertices but no face.
+  Mesh points_only;
+  points_only.add_vertex(Point_3(0, 0, 0));
+  points_only.add_vertex(Point_3(1, 2, 3));
+  expect_failure(Textured(points_only), SMP::ERROR_EMPTY_MESH, "no face");
+}
+
+TEST(BadInput, SingleTriangleIsLaidOutWithItsL1Lengths)
+{
+  // Each L1 edge length is reachable in the plane with the signs of the XY-MinMax guess.
+  Mapped_mesh run(mesh_of({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0)}, {{0, 1, 2}}));
+  Parameterizer parameterizer;
+  parameterizer.set_texture_fit(SMP::NO_FIT);
+  run.parameterize(parameterizer, first_halfedge(run.mesh));
+  expect_solved(run);
+  EXPECT_NEAR(run.report.objective, 0., 1e-12);
+  for(auto h : halfedges(run.mesh))
+  {
+    const Point_2 a = get(run.uv, source(h, run.mesh)), b = get(run.uv, target(h, run.mesh));
+    const Point_3 p = run.mesh.point(source(h, run.mesh)), q = run.mesh.point(target(h, run.mesh));
+    EXPECT_NEAR(std::abs(a.x() - b.x()) + std::abs(a.y() - b.y()),
+                std::abs(p.x() - q.x()) + std::abs(p.y() - q.y()) + std::abs(p.z() - q.z()), 1e-9);
+  }
+  expect_in_unit_square(Textured(run.mesh));
+}
+
+TEST(BadInput, NonManifoldVertexIsRejected)
+{
+  // Through a soup, and through a Surface_mesh, which takes the second fan at the vertex.
+  expect_failure(Textured_soup(bow_tie_points, bow_tie_faces), SMP::ERROR_NON_TRIANGULAR_MESH, "non-manifold");
+  const Mesh mesh = mesh_of(bow_tie_points, bow_tie_faces);
+  expect_failure(Textured(mesh), SMP::ERROR_NON_TRIANGULAR_MESH, "non-manifold");
+  for(Halfedge h : halfedges(mesh))
+  {
+    if(is_border(h, mesh)) continue;
+    Mapped_mesh run(mesh);
+    Parameterizer parameterizer;
+    run.parameterize(parameterizer, h);
+    expect_failure(run, SMP::ERROR_NON_TRIANGULAR_MESH, "non-manifold");
+  }
+}
+
+TEST(BadInput, NonManifoldEdgeIsRejected)
+{
+  // Three triangles on the edge 0-1.
+  const std::vector<Point_3> points = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0.5, 1, 0),
+                                       Point_3(0.5, -1, 0), Point_3(0.5, 0, 1)};
+  expect_failure(Textured_soup(points, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}), SMP::ERROR_NON_TRIANGULAR_MESH,
+                 "non-manifold");
+}
+
+TEST(BadInput, DuplicateVerticesOnASeamMakeTwoComponents)
+{
+  // A square cut along its diagonal: the diagonal's two vertices are duplicated.
+  Textured_soup soup({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0),
+                      Point_3(0, 0, 0), Point_3(1, 1, 0)},
+                     {{0, 1, 2}, {4, 5, 3}});
+  ASSERT_EQ(soup.status, SMP::OK) << soup.report.message;
+  EXPECT_EQ(soup.report.components, 2u);
+  for(const Point_2& p : soup.uv)
+    EXPECT_TRUE(p.x() >= 0 && p.x() <= 1 && p.y() >= 0 && p.y() <= 1) << p;
+  // Laid apart: the two copies of a vertex get different uvs.
+  EXPECT_NE(soup.uv[0], soup.uv[4]);
+  EXPECT_NE(soup.uv[2], soup.uv[5]);
+}
+
+TEST(BadInput, ZeroLengthEdgeAndZeroAreaFacesAreSolved)
+{
+  // A tetrahedron whose fourth vertex is a duplicate of the first, joined to it by an edge:
+  // two faces with a zero-length edge, and zero area.
+  const Mesh tetrahedron = mesh_of({Point_3(0, 0, 0), Point_3(3, 0, 1), Point_3(1, 2, 0), Point_3(0, 0, 0)},
+                                   {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}});
+  Mapped_mesh duplicate(tetrahedron);
+  Parameterizer parameterizer;
+  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_automatic_fixed_pair();
+  duplicate.parameterize(parameterizer, first_halfedge(duplicate.mesh));
+  expect_solved(duplicate);
+  // A disk with a face whose three distinct vertices are collinear.
+  Mapped_mesh flat(mesh_of({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(2, 0, 0), Point_3(1, 1, 0)},
+                           {{0, 1, 3}, {1, 2, 3}, {0, 2, 1}}));
+  flat.parameterize(parameterizer, first_halfedge(flat.mesh));
+  expect_solved(flat);
+  // The zero-length edge as the fixed pair cannot fix a direction.
+  Mapped_mesh pair(tetrahedron);
+  parameterizer.set_fixed_pair(Vertex(0), Vertex(3));
+  pair.parameterize(parameterizer, first_halfedge(pair.mesh));
+  expect_failure(pair, SMP::ERROR_WRONG_PARAMETER, "same position");
+}
+
+TEST(BadInput, NonFiniteCoordinatesAreRejected)
+{
+  for(double bad : {nan, inf, -inf})
+  {
+    Mesh mesh = np_test::tetrahedron();
+    mesh.point(Vertex(2)) = Point_3(1, 2, bad);
+    Mapped_mesh run(mesh);
+    Parameterizer parameterizer;
+    run.parameterize(parameterizer, first_halfedge(run.mesh));
+    expect_failure(run, SMP::ERROR_WRONG_PARAMETER, "non-finite");
+    expect_failure(Textured(mesh), SMP::ERROR_WRONG_PARAMETER, "vertex 2 has a non-finite coordinate");
+  }
+}
+
+TEST(BadInput, NonFiniteIsolatedVertexIsLeftAlone)
+{
+  Mesh mesh = np_test::tetrahedron();
+  const Vertex lonely = mesh.add_vertex(Point_3(nan, inf, 0));
+  Textured t(mesh);
+  expect_in_unit_square(t);
+  EXPECT_EQ(t.report.isolated_vertices, 1u);
+  EXPECT_EQ(get(t.uv, lonely), sentinel);
+}
+
+// `reference` and `run` at `s` times its scale, in mesh units: uvs and objective scaled by s.
+void expect_scaled(const Mapped_mesh& reference, const Mapped_mesh& run, double s, double tolerance)
+{
+  double extent = 0;
+  for(Vertex v : vertices(reference.mesh))
+    extent = std::max({extent, std::abs(get(reference.uv, v).x()), std::abs(get(reference.uv, v).y())});
+  EXPECT_NEAR(run.report.objective, s * s * reference.report.objective, tolerance * s * s * reference.report.objective);
+  for(Vertex v : vertices(reference.mesh))
+  {
+    const Point_2 p = get(run.uv, v), q = get(reference.uv, v);
+    ASSERT_NEAR(p.x(), s * q.x(), tolerance * s * extent) << "scale " << s;
+    ASSERT_NEAR(p.y(), s * q.y(), tolerance * s * extent) << "scale " << s;
+  }
+}
+
+TEST(BadInput, TinyAndHugeCoordinatesScaleTheResult)
+{
+  Parameterizer parameterizer;
+  parameterizer.set_texture_fit(SMP::NO_FIT);
+  // Scaled by 2^-40 ~ 1e-12 and 2^40 ~ 1e12, rounding-free: the very same map, scaled,
+  // even on a mesh whose symmetries make exact ties in the guess.
+  const Mesh sphere = np_test::icosphere();
+  Mapped_mesh reference(sphere);
+  reference.parameterize(parameterizer, first_halfedge(reference.mesh));
+  expect_solved(reference);
+  const Textured fitted(sphere);
+  for(double s : {std::ldexp(1., -40), std::ldexp(1., 40)})
+  {
+    Mapped_mesh run(scaled(sphere, s));
+    run.parameterize(parameterizer, first_halfedge(run.mesh));
+    expect_solved(run);
+    expect_scaled(reference, run, s, 0.);
+    const Textured t(scaled(sphere, s)); // fitted into the unit square, the scale is gone
+    expect_in_unit_square(t);
+    for(Vertex v : vertices(sphere))
+      ASSERT_EQ(get(t.uv, v), get(fitted.uv, v));
+  }
+  // Scaled by 1e-12 and 1e12, with rounding, on a scan (no exact ties): the same map up to
+  // the solver's tolerance.
+  const Mesh scan = np_test::load_mesh("nefertiti");
+  Mapped_mesh scan_reference(scan);
+  scan_reference.parameterize(parameterizer, first_halfedge(scan_reference.mesh));
+  expect_solved(scan_reference);
+  for(double s : {1e-12, 1e12})
+  {
+    Mapped_mesh run(scaled(scan, s));
+    run.parameterize(parameterizer, first_halfedge(run.mesh));
+    expect_solved(run);
+    expect_scaled(scan_reference, run, s, 1e-6);
+  }
+}
+
+TEST(BadInput, CollinearVertices)
+{
+  // Along the x axis the XY-MinMax guess is undefined (DESIGN.md item 5).
+  const Polygons strip = {{0, 1, 2}, {0, 2, 3}};
+  Mapped_mesh on_x(mesh_of({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(2, 0, 0), Point_3(3, 0, 0)}, strip));
+  Parameterizer parameterizer;
+  on_x.parameterize(parameterizer, first_halfedge(on_x.mesh));
+  expect_failure(on_x, SMP::ERROR_WRONG_PARAMETER, "same y");
+  // Along a diagonal it is defined, and every L1 edge length is kept (objective 0).
+  Mapped_mesh diagonal(mesh_of({Point_3(0, 0, 0), Point_3(1, 1, 1), Point_3(2, 2, 2), Point_3(3, 3, 3)}, strip));
+  parameterizer.set_texture_fit(SMP::NO_FIT);
+  diagonal.parameterize(parameterizer, first_halfedge(diagonal.mesh));
+  expect_solved(diagonal);
+  EXPECT_NEAR(diagonal.report.objective, 0., 1e-12);
+}
+
+TEST(BadInput, CoplanarVerticesInAPlaneOrthogonalToXY)
+{
+  // A closed box flattened onto the plane x = 0.
+  Mesh box = np_test::triangulated_cube();
+  for(Vertex v : vertices(box))
+    box.point(v) = Point_3(0, box.point(v).y(), box.point(v).z() + 0.5 * box.point(v).x());
+  Mapped_mesh xy(box);
+  Parameterizer parameterizer;
+  xy.parameterize(parameterizer, first_halfedge(xy.mesh));
+  expect_failure(xy, SMP::ERROR_WRONG_PARAMETER, "same x");
+  Mapped_mesh graph(box);
+  SMP::Norm_preserving_parameterizer_3<Mesh, SMP::Graph_based_initial_guess> graph_based;
+  graph.parameterize(graph_based, first_halfedge(graph.mesh));
+  expect_failure(graph, SMP::ERROR_WRONG_PARAMETER, "same x");
+  // The combination guess rotates the plane out of its edge-on view.
+  Mapped_mesh combination(box);
+  SMP::Norm_preserving_parameterizer_3<Mesh, SMP::Combination_initial_guess> combined;
+  combination.parameterize(combined, first_halfedge(combination.mesh));
+  expect_solved(combination);
+}
+
+TEST(BadInput, FixedPairThatIsNotAnEdgeOrSpansComponents)
+{
+  // Through the parameterizer.
+  Mapped_mesh run(np_test::triangulated_cube());
+  Parameterizer parameterizer;
+  Vertex a = Vertex(0), far = a;
+  for(Vertex v : vertices(run.mesh))
+    if(CGAL::squared_distance(run.mesh.point(v), run.mesh.point(a)) >
+       CGAL::squared_distance(run.mesh.point(far), run.mesh.point(a))) far = v;
+  parameterizer.set_fixed_pair(a, far); // opposite corners of the box: no edge
+  run.parameterize(parameterizer, first_halfedge(run.mesh));
+  expect_failure(run, SMP::ERROR_WRONG_PARAMETER, "not the two ends of an edge");
+
+  // Through the whole-mesh call, on two tetrahedra.
+  Mesh two = np_test::tetrahedron();
+  CGAL::copy_face_graph(scaled(np_test::tetrahedron(), 2), two);
+  Options options;
+  options.fixed_pair = std::make_pair(Vertex(0), Vertex(5));
+  expect_failure(Textured(two, options), SMP::ERROR_WRONG_PARAMETER, "not in the same connected component");
+  options.fixed_pair = std::make_pair(Vertex(0), Vertex(0));
+  expect_failure(Textured(two, options), SMP::ERROR_WRONG_PARAMETER, "not the two ends of an edge");
+  SMP::Texture_polygon_mesh_options<SMP::Norm_preserving_triangle_mesh> soup_options;
+  soup_options.fixed_pair = std::make_pair(SMP::Norm_preserving_triangle_mesh::Vertex_index(0),
+                                           SMP::Norm_preserving_triangle_mesh::Vertex_index(7));
+  Textured_soup soup({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0)}, {{0, 1, 2}}, soup_options);
+  expect_failure(soup, SMP::ERROR_WRONG_PARAMETER, "not a vertex of the mesh");
+}
+
+TEST(BadInput, IsolatedVerticesAreLeftAlone)
+{
+  Mesh mesh = np_test::tetrahedron();
+  const Vertex lonely = mesh.add_vertex(Point_3(-10, 0, 0)); // smallest x of all
+  Mapped_mesh run(mesh);
+  Parameterizer parameterizer;
+  parameterizer.set_automatic_fixed_pair();
+  run.parameterize(parameterizer, first_halfedge(run.mesh));
+  expect_solved(run);
+  EXPECT_EQ(run.report.vertices, 4u);
+  EXPECT_EQ(get(run.uv, lonely), sentinel);
+  EXPECT_FALSE(get(run.marked, lonely));
+
+  std::vector<Point_3> points = {Point_3(5, 5, 5), Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0)};
+  Textured_soup soup(points, {{1, 2, 3}});
+  ASSERT_EQ(soup.status, SMP::OK) << soup.report.message;
+  EXPECT_EQ(soup.report.isolated_vertices, 1u);
+  EXPECT_EQ(soup.uv[0], sentinel);
+  for(std::size_t i = 1; i < 4; ++i)
+    EXPECT_TRUE(np_test::is_finite(soup.uv[i]) && soup.uv[i] != sentinel);
+}
+
+TEST(BadInput, TenThousandDisconnectedTrianglesAreLaidOutApart)
+{
+  // An STL-like soup: every triangle with its own three vertices, in a random-looking order.
+  const std::size_t n = 10000;
+  std::vector<Point_3> points;
+  Polygons polygons;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const double x = double((k * 7919) % 100), y = double((k * 104729) % 97), z = double(k % 13);
+    points.insert(points.end(), {Point_3(x, y, z), Point_3(x + 0.9, y, z + 0.1), Point_3(x, y + 0.8, z + 0.3)});
+    polygons.push_back({3 * k, 3 * k + 1, 3 * k + 2});
+  }
+  Textured_soup soup(points, polygons);
+  ASSERT_EQ(soup.status, SMP::OK) << soup.report.message;
+  EXPECT_EQ(soup.report.components, n);
+  ASSERT_EQ(soup.report.reports.size(), n);
+
+  // Each triangle's box in the unit square, and no two boxes overlap (sweep along u).
+  std::vector<std::array<double, 4> > boxes(n);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const Point_2 a = soup.uv[3 * k], b = soup.uv[3 * k + 1], c = soup.uv[3 * k + 2];
+    boxes[k] = {std::min({a.x(), b.x(), c.x()}), std::min({a.y(), b.y(), c.y()}),
+                std::max({a.x(), b.x(), c.x()}), std::max({a.y(), b.y(), c.y()})};
+    ASSERT_TRUE(boxes[k][0] >= 0 && boxes[k][1] >= 0 && boxes[k][2] <= 1 && boxes[k][3] <= 1) << k;
+    ASSERT_GT(boxes[k][2], boxes[k][0]);
+  }
+  std::sort(boxes.begin(), boxes.end());
+  std::size_t overlaps = 0;
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = i + 1; j < n && boxes[j][0] < boxes[i][2]; ++j)
+      if(boxes[j][1] < boxes[i][3] && boxes[i][1] < boxes[j][3]) ++overlaps;
+  EXPECT_EQ(overlaps, 0u);
+}
+
+TEST(BadInput, PolygonWithARepeatedVertexIsRejected)
+{
+  const std::vector<Point_3> square = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0)};
+  expect_failure(Textured_soup(square, {{0, 1, 2, 1, 3}}), SMP::ERROR_NON_TRIANGULAR_MESH, "face 0 has a repeated vertex");
+  expect_failure(Textured(np_test::triangle_and_face_with_a_repeated_vertex()), SMP::ERROR_NON_TRIANGULAR_MESH,
+                 "repeated vertex");
+}
+
+TEST(BadInput, SoupFacesOfTooFewOrMissingVertices)
+{
+  const std::vector<Point_3> square = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0)};
+  expect_failure(Textured_soup(square, {{0, 1, 2}, {2, 3}}), SMP::ERROR_NON_TRIANGULAR_MESH, "face 1 has 2 vertices");
+  expect_failure(Textured_soup(square, {{0, 1, 2}, {0, 2, 4}}), SMP::ERROR_WRONG_PARAMETER,
+                 "face 1 refers to vertex 4 of 4");
+}
+
+// Inputs on which the fuzzer (fuzz/fuzz_texture_off.cpp) found a crash, read as it reads them.
+Textured_soup soup_of_off(const std::string& off)
+{
+  std::vector<Point_3> points;
+  Polygons polygons;
+  std::istringstream in(off);
+  if(!CGAL::IO::read_OFF(in, points, polygons)) throw std::runtime_error("soup_of_off: not OFF");
+  return Textured_soup(points, polygons);
+}
+
+TEST(FuzzRegression, HexagonsWhoseProjectionCrossesItself)
+{
+  // The constrained Delaunay triangulation of triangulate_faces() inserted the crossings of
+  // these hexagons as vertices and read past the halfedges (an assertion, or out of bounds).
+  const Textured_soup soup = soup_of_off("OFF\n12 8 0\n0 0 1\n6 2 1\n2 0 1\n0 2 1\n2 2 1\n2 0 1\n"
+                                         "1 1 1\n1 1 1\n1 1 1\n0 1 1\n1 0 5\n1 0 1\n3 0 1 4\n"
+                                         "6 8 6 10 2 1 0\n4 9 8 0 3\n6 9 3 4 5 11 7\n4 5 4 1 2\n"
+                                         "4 9 7 6 8\n4 11 5 2 0\n4 11 0 6 7\n");
+  expect_failure(soup, SMP::ERROR_NON_TRIANGULAR_MESH, "non-manifold"); // as the faces are
+}
+
+TEST(FuzzRegression, HexagonWhoseHoleFillingIsIncomplete)
+{
+  // The hole filling of triangulate_faces() left an incomplete patch in the mesh, whose
+  // halfedges then pointed past the end.
+  const Textured_soup soup = soup_of_off("OFF\n12 8 0\n0 2 1\n1 2 1\n2 0 1\n0 2 21\n2 2 -1\n2 0 -1\n"
+                                         "1 1 1\n1 0 -1\n3 1 1\n0 1 -1\n1 0 5\n1 0 -1\n4 3 0 1 4\n"
+                                         "6 8 6 10 2 1 0\n4 9 8 0 3\n6 9 3 4 5 11 7\n4 5 4 1 2\n"
+                                         "4 9 7 6 8\n4 11 5 2 10\n4 11 10 6 7\n");
+  EXPECT_EQ(soup.status, SMP::OK) << soup.report.message;
+}
+
+TEST(FuzzRegression, HugeCoordinateInAHexagon)
+{
+  // The 3D Delaunay triangulation that hole filling searches asserted on the rounding errors
+  // of inexact predicates around a coordinate of 6.7e97.
+  const Textured_soup soup = soup_of_off("OFF\n12 8 0\n0" + std::string(98, '6') + " 2 1\n2 2 1\n2 0 1\n0 2 21\n"
+                                         "0 2 -2\n2 0 -1\n3 1 1\n1 1 -1\n1 0 1\n0 1 -1\n1 0 5\n1 0 -0\n"
+                                         "4 3 0 1 4\n6 8 6 10 2 1 0\n4 9 8 0 3\n6 9 3 4 5 11 7\n4 5 4 1 2\n"
+                                         "4 9 7 6 8\n4 11 5 2 10\n4 11 10 6 7\n");
+  EXPECT_EQ(soup.status, SMP::OK) << soup.report.message;
+}
+
+// Determinism and thread safety: the parameterizer keeps no shared state.
+TEST(Threads, TwoParameterizersOnTwoThreadsGiveTheSequentialUvs)
+{
+  const Mesh meshes[2] = {np_test::load_mesh("nefertiti"), np_test::icosphere()};
+  const auto run = [](const Mesh& mesh, std::vector<Point_2>& uv) {
+    Mapped_mesh mapped(mesh);
+    SMP::Norm_preserving_parameterizer_3<Mesh, SMP::Graph_based_initial_guess> parameterizer;
+    mapped.parameterize(parameterizer, first_halfedge(mapped.mesh));
+    uv.clear();
+    if(mapped.status != SMP::OK) return;
+    for(Vertex v : vertices(mapped.mesh)) uv.push_back(get(mapped.uv, v));
+  };
+  std::vector<Point_2> sequential[2], threaded[2];
+  for(int i = 0; i < 2; ++i)
+  {
+    run(meshes[i], sequential[i]);
+    ASSERT_EQ(sequential[i].size(), num_vertices(meshes[i]));
+  }
+  for(int round = 0; round < 2; ++round)
+  {
+    std::thread first(run, std::cref(meshes[0]), std::ref(threaded[0]));
+    std::thread second(run, std::cref(meshes[1]), std::ref(threaded[1]));
+    first.join();
+    second.join();
+    for(int i = 0; i < 2; ++i)
+      EXPECT_TRUE(threaded[i] == sequential[i]) << "mesh " << i << ", round " << round;
+  }
+}
+
+} // namespace

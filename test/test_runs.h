@@ -1,0 +1,78 @@
+// One run of the parameterizer, or of the whole-mesh call, on a mesh whose uv map starts
+// filled with a sentinel, so that a test can tell whether the run wrote to it.
+
+#ifndef NP_TEST_RUNS_H
+#define NP_TEST_RUNS_H
+
+#include "test_meshes.h"
+
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
+
+#include <cmath>
+#include <utility>
+
+namespace np_test {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+using Vertex = Mesh::Vertex_index;
+using Halfedge = Mesh::Halfedge_index;
+using Parameterizer = SMP::Norm_preserving_parameterizer_3<Mesh>;
+using Options = SMP::Texture_polygon_mesh_options<Mesh>;
+
+const Point_2 sentinel(-123.5, 456.25);
+
+// The parameterizer on `mesh`, its uvs and marks.
+struct Mapped_mesh
+{
+  Mesh mesh;
+  Mesh::Property_map<Vertex, Point_2> uv;
+  Mesh::Property_map<Vertex, bool> marked;
+  SMP::Error_code status = SMP::OK;
+  SMP::Norm_preserving_report report;
+
+  explicit Mapped_mesh(Mesh m) : mesh(std::move(m))
+  {
+    uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
+    marked = mesh.add_property_map<Vertex, bool>("v:marked", false).first;
+  }
+  template <typename P>
+  void parameterize(P& parameterizer, Halfedge h)
+  {
+    status = parameterizer.parameterize(mesh, h, uv, get(CGAL::vertex_index, mesh), marked);
+    report = parameterizer.report();
+  }
+  bool untouched() const
+  {
+    for(Vertex v : vertices(mesh))
+      if(get(uv, v) != sentinel || get(marked, v)) return false;
+    return true;
+  }
+};
+
+// `texture_polygon_mesh()` on `mesh`.
+struct Textured
+{
+  Mesh mesh;
+  Mesh::Property_map<Vertex, Point_2> uv;
+  SMP::Texture_polygon_mesh_report report;
+  SMP::Error_code status = SMP::OK;
+
+  explicit Textured(Mesh m, const Options& options = Options()) : mesh(std::move(m))
+  {
+    uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
+    status = SMP::texture_polygon_mesh(mesh, uv, options, &report);
+  }
+  bool untouched() const
+  {
+    for(Vertex v : vertices(mesh))
+      if(get(uv, v) != sentinel) return false;
+    return true;
+  }
+};
+
+inline bool is_finite(const Point_2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
+
+} // namespace np_test
+
+#endif
