@@ -186,16 +186,24 @@ double solved_objective(Mesh mesh, Parameterizer& parameterizer)
   return parameterizer.report().objective;
 }
 
+using Exact_parameterizer =
+  SMP::Norm_preserving_parameterizer_3<Mesh, CGAL::Default, SMP::Interior_point_quadratic_program_traits<double> >;
+
 TEST(NormPreservingQP, ObjectiveMatchesExactSolverOnSmallMeshes)
 {
   for(const Mesh& mesh : {np_test::tetrahedron(), np_test::triangulated_cube(), np_test::icosphere()})
   {
-    SMP::Norm_preserving_parameterizer_3<Mesh> ours;
+    Exact_parameterizer ours;
+    SMP::Norm_preserving_parameterizer_3<Mesh> fast;
     SMP::Norm_preserving_parameterizer_3<Mesh, CGAL::Default, Exact_qp_traits> exact;
     const double ours_objective = solved_objective(mesh, ours);
+    const double fast_objective = solved_objective(mesh, fast);
     const double exact_objective = solved_objective(mesh, exact);
     EXPECT_NEAR(ours_objective, exact_objective, 1e-6 * exact_objective) << num_vertices(mesh) << " vertices";
     EXPECT_GT(ours.report().initial_objective, ours_objective);
+    // The default ADMM solver is feasible, so at or above the optimum, and within 1e-4 of it.
+    EXPECT_GE(fast_objective, exact_objective * (1 - 1e-9)) << num_vertices(mesh) << " vertices";
+    EXPECT_LE(fast_objective, exact_objective * (1 + 1e-4)) << num_vertices(mesh) << " vertices";
   }
 }
 
@@ -204,19 +212,26 @@ TEST(NormPreservingQP, ReachesTheCertifiedOptimumOnNefertiti)
   // Optimum of an independent solver certified by its KKT conditions (issue 2): XY-MinMax
   // guess, automatic fixed pair, plain sum of Eq. 4 in mesh units.
   const double reference = 2.096169632192;
-  SMP::Norm_preserving_parameterizer_3<Mesh> parameterizer;
+  Exact_parameterizer parameterizer;
   parameterizer.set_automatic_fixed_pair();
   EXPECT_NEAR(solved_objective(np_test::load_mesh("nefertiti"), parameterizer), reference, 1e-8 * reference);
   const SMP::Norm_preserving_report& report = parameterizer.report();
   EXPECT_TRUE(report.has_solver_statistics);
   EXPECT_LT(report.kkt_residual, 1e-8);
   EXPECT_GT(report.active_constraints, 0u);
+
+  // The default (ADMM) solver: feasible, so not below the optimum, and within 1e-4 of it.
+  SMP::Norm_preserving_parameterizer_3<Mesh> fast;
+  fast.set_automatic_fixed_pair();
+  const double objective = solved_objective(np_test::load_mesh("nefertiti"), fast);
+  EXPECT_GE(objective, reference * (1 - 1e-9));
+  EXPECT_LE(objective, reference * (1 + 1e-4));
 }
 
 TEST(NormPreservingQP, StoppingEarlyIsAFailureNotAResult)
 {
-  SMP::Norm_preserving_parameterizer_3<Mesh> parameterizer(SMP::XY_min_max_initial_guess(),
-    SMP::Interior_point_quadratic_program_traits<double>(1e-10, 3));
+  Exact_parameterizer parameterizer(SMP::XY_min_max_initial_guess(),
+                                    SMP::Interior_point_quadratic_program_traits<double>(1e-10, 3));
   Mesh mesh = np_test::load_mesh("nefertiti");
   auto uv = mesh.add_property_map<Mesh::Vertex_index, np_test::Point_2>("v:uv", np_test::Point_2(7, 7)).first;
   auto marked = mesh.add_property_map<Mesh::Vertex_index, bool>("v:marked", false).first;

@@ -2,7 +2,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_PARAMETERIZER_3_H
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
-#include <CGAL/Surface_mesh_parameterization/Interior_point_quadratic_program_traits.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_ADMM_solver.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
 #include <CGAL/Surface_mesh_parameterization/Texture_fit.h>
 #include <CGAL/Surface_mesh_parameterization/XY_min_max_initial_guess.h>
@@ -23,6 +23,7 @@
 #include <cmath>
 #include <iterator>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -44,8 +45,9 @@ namespace Surface_mesh_parameterization {
 /// \tparam TriangleMesh_ a model of `FaceGraph` with an internal `vertex_point` map
 /// \tparam InitialGuess_ a model of `NormPreservingInitialGuess`;
 ///         default `XY_min_max_initial_guess`
-/// \tparam SolverTraits_ a model of `QuadraticProgramTraits`;
-///         default `Interior_point_quadratic_program_traits<double>`
+/// \tparam SolverTraits_ `Norm_preserving_ADMM_solver` (the default: fast, to a tolerance) or
+///         a model of `QuadraticProgramTraits`, such as `Interior_point_quadratic_program_traits`
+///         (the exact optimum) or `CGAL::OSQP_quadratic_program_traits`
 ///
 /// \cgalModels `Parameterizer_3`
 template <typename TriangleMesh_,
@@ -61,8 +63,7 @@ public:
   /// the initial-guess type
   typedef typename Default::Get<InitialGuess_, XY_min_max_initial_guess>::type Initial_guess;
   /// the QP solver type
-  typedef typename Default::Get<SolverTraits_,
-                                Interior_point_quadratic_program_traits<double> >::type Solver_traits;
+  typedef typename Default::Get<SolverTraits_, Norm_preserving_ADMM_solver>::type Solver_traits;
   /// halfedge handle of the mesh
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
   /// vertex handle of the mesh
@@ -77,7 +78,7 @@ public:
   /// fixes `source(bhd)` at the origin and `target(bhd)` along the guessed direction (default).
   void set_fixed_pair_from_halfedge() { m_pair_choice = Pair_choice::HALFEDGE; }
   /// fixes the vertex of smallest x (lowest index on ties) and its neighbour across the
-  /// longest L1 edge.
+  /// longest L1 edge (lowest index on ties) among those that the initial guess puts elsewhere.
   void set_automatic_fixed_pair() { m_pair_choice = Pair_choice::AUTOMATIC; }
   /// fixes `a` at the origin and `b` along the guessed direction; they must be adjacent
   /// vertices of the component being parameterized.
@@ -103,7 +104,8 @@ public:
   /// halfedge of it, border or not, and marks each in `vpmap`.
   ///
   /// On failure it returns `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH` (a face that is
-  /// not a triangle of three distinct vertices), `ERROR_WRONG_PARAMETER` (non-finite
+  /// not a triangle of three distinct vertices, or a vertex of the component whose faces form
+  /// several fans), `ERROR_WRONG_PARAMETER` (non-finite
   /// coordinates, zero extent, an undefined guess, a fixed pair that is not an edge of the
   /// component) or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`, explains it in `report().message`,
   /// and writes nothing to `uvmap` or `vpmap`.
@@ -131,6 +133,9 @@ public:
         put(vpmap, component.vertices[i], true);
       }
     m_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const Norm_preserving_timings& t = m_report.timings;
+    m_report.timings.write_back =
+      (std::max)(0., m_report.seconds - t.extraction - t.guess - t.assembly - t.factorization - t.iterations);
     return m_report.status;
   }
 
@@ -149,6 +154,13 @@ private:
                      std::vector<std::array<double, 2> >& uv)
   {
     namespace NP = internal::Norm_preserving;
+    auto step_start = std::chrono::steady_clock::now();
+    auto lap = [&step_start]() {
+      const auto now = std::chrono::steady_clock::now();
+      const double seconds = std::chrono::duration<double>(now - step_start).count();
+      step_start = now;
+      return seconds;
+    };
     Error_code status = NP::extract_component(mesh, bhd, component, m_report.message);
     if(status != OK)
       return status;
@@ -169,13 +181,16 @@ private:
     double unit = 0;
     for(double l : lengths) unit += l;
     unit /= double(lengths.size());
-    if(!(unit > 0) || !std::isfinite(unit))
+    if(!std::isfinite(unit))
+      return fail(ERROR_WRONG_PARAMETER, "the edge lengths overflow: the coordinates are too large");
+    if(!(unit > 0))
       return fail(ERROR_WRONG_PARAMETER, "all edges have zero length");
     const std::array<double, 3> origin = geometry.points[a];
     for(auto& p : geometry.points)
       for(int c = 0; c < 3; ++c)
         p[c] = (p[c] - origin[c]) / unit;
     lengths = NP::edge_l1_lengths(geometry);
+    m_report.timings.extraction = lap();
 
     status = m_guess(geometry, uv, m_report.message);
     if(status != OK)
@@ -185,6 +200,8 @@ private:
     for(const auto& p : uv)
       if(!std::isfinite(p[0]) || !std::isfinite(p[1]))
         return fail(ERROR_WRONG_PARAMETER, "the initial guess has a non-finite value");
+    if(m_pair_choice == Pair_choice::AUTOMATIC && uv[a] == uv[b])
+      m_report.fixed_b = b = NP::automatic_partner(geometry, a, &uv); // the guess must tell a from b
 
     std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{a, {}}, NP::Fixed_vertex{b, {}}};
     const double l1_ab = NP::l1_distance(geometry.points[a], geometry.points[b]);
@@ -199,6 +216,7 @@ private:
     const NP::Edge_signs signs = NP::edge_signs(geometry, uv);
     m_report.initial_objective = NP::sign_constrained_objective(geometry, lengths, signs, uv) * unit * unit;
     m_report.constraints = 2 * geometry.edges.size();
+    m_report.timings.guess = lap();
 
     status = solve_qp(geometry, lengths, signs, fixed, uv);
     if(status != OK)
@@ -243,11 +261,43 @@ private:
                       std::vector<std::array<double, 2> >& uv)
   {
     namespace NP = internal::Norm_preserving;
+    if constexpr(std::is_same<Solver_traits, Norm_preserving_ADMM_solver>::value)
+    {
+      Solver_traits solver = m_solver;
+      const bool solved = solver.solve(geometry, lengths, signs, fixed, uv);
+      const Norm_preserving_ADMM_statistics& statistics = solver.statistics();
+      m_report.has_solver_statistics = true;
+      m_report.solver_status = statistics.status;
+      m_report.solver_iterations = statistics.iterations;
+      m_report.kkt_residual = (std::max)(statistics.primal_residual, statistics.dual_residual);
+      m_report.message = statistics.message;
+      m_report.timings.assembly = statistics.assembly_seconds;
+      m_report.timings.factorization = statistics.factorization_seconds;
+      m_report.timings.iterations = statistics.iteration_seconds;
+      if(!solved)
+        return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver failed: " + statistics.message);
+      return OK;
+    }
+    else
+      return solve_general_qp(geometry, lengths, signs, fixed, uv);
+  }
+
+  // Any model of QuadraticProgramTraits: Eq. 5 written out as a general QP.
+  Error_code solve_general_qp(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                              const internal::Norm_preserving::Edge_signs& signs,
+                              const std::array<internal::Norm_preserving::Fixed_vertex, 2>& fixed,
+                              std::vector<std::array<double, 2> >& uv)
+  {
+    namespace NP = internal::Norm_preserving;
+    auto start = std::chrono::steady_clock::now();
     Solver_traits qp = m_solver;
     NP::assemble_sign_constrained_qp(geometry, lengths, signs, fixed, qp);
+    m_report.timings.assembly = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    start = std::chrono::steady_clock::now();
     std::vector<double> x;
     x.reserve(2 * uv.size());
     const bool solved = qp.solve(std::back_inserter(x));
+    m_report.timings.iterations = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     NP::copy_solver_statistics(qp, m_report);
     if(!solved || x.size() != 2 * uv.size())
       return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver failed" +
@@ -259,6 +309,7 @@ private:
       uv[i] = {x[2 * i], x[2 * i + 1]};
     for(const NP::Fixed_vertex& f : fixed)
       uv[f.index] = f.target;
+    m_report.solver_status = SOLVER_CONVERGED;
     return OK;
   }
 

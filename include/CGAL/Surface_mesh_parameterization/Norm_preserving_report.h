@@ -10,6 +10,28 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgNormPreservingParameterization
+/// How a solver of `Norm_preserving_parameterizer_3` ended.
+enum Norm_preserving_solver_status
+{
+  SOLVER_CONVERGED,       ///< the tolerance was met
+  SOLVER_ITERATION_LIMIT, ///< the iteration limit was hit: the best feasible point found is returned
+  SOLVER_TIME_LIMIT,      ///< the time limit was hit: the best feasible point found is returned
+  SOLVER_FAILED           ///< no solution (the uv map is left untouched)
+};
+
+/// \ingroup PkgNormPreservingParameterization
+/// Where the time of one `Norm_preserving_parameterizer_3::parameterize()` call went, in seconds.
+struct Norm_preserving_timings
+{
+  double extraction = 0;    ///< copying the component, choosing the fixed pair, normalizing
+  double guess = 0;         ///< the initial guess, the similarity transform and the signs
+  double assembly = 0;      ///< setting up the QP (the Laplacian, for the ADMM solver)
+  double factorization = 0; ///< the ADMM solver's Laplacian factorization (0 for other solvers)
+  double iterations = 0;    ///< the solver's iterations (the whole solve, for other solvers)
+  double write_back = 0;    ///< the rest: the final objective, the fit into texture space, the uv map
+};
+
+/// \ingroup PkgNormPreservingParameterization
 /// What the last call of `Norm_preserving_parameterizer_3::parameterize()` did.
 /// Lengths are in mesh units; objectives are the plain sum of Eq. 4 (no 1/2 factor).
 struct Norm_preserving_report
@@ -25,10 +47,14 @@ struct Norm_preserving_report
   double max_constraint_violation = 0; ///< largest violation of a sign constraint
   std::size_t active_constraints = 0;  ///< sign constraints at equality (within 1e-8 mean edge length)
   std::size_t constraints = 0;         ///< sign constraints, two per edge
+  /// how the QP solver ended: on an iteration or time limit the uvs are the best feasible
+  /// point it found, and `message` says so
+  Norm_preserving_solver_status solver_status = SOLVER_FAILED;
   bool has_solver_statistics = false;  ///< whether the solver reported the two fields below
   int solver_iterations = 0;           ///< iterations of the QP solver
-  double kkt_residual = 0;             ///< largest KKT residual of the normalized QP (edge lengths ~ 1)
+  double kkt_residual = 0;             ///< largest residual the solver reports on the normalized QP (edge lengths ~ 1)
   double seconds = 0;                  ///< wall-clock time of the call
+  Norm_preserving_timings timings;     ///< the same time, step by step
 };
 
 /// \ingroup PkgNormPreservingParameterization

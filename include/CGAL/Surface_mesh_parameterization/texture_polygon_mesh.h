@@ -3,15 +3,18 @@
 
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Component_layout.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_soup.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Texture_space_fit.h>
 
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/property_map.h>
 
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <chrono>
 #include <optional>
 #include <string>
@@ -22,11 +25,13 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgNormPreservingParameterization
-/// The triangle mesh that `texture_polygon_mesh()` triangulates its input into.
+/// The triangle mesh that `texture_polygon_soup()` and `texture_polygon_mesh()` build each
+/// connected component of their input into, and triangulate.
 typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Norm_preserving_triangle_mesh;
 
 /// \ingroup PkgNormPreservingParameterization
-/// Options of `texture_polygon_mesh()`.
+/// Options of `texture_polygon_mesh()` and, with `Norm_preserving_triangle_mesh` as
+/// `PolygonMesh`, of `texture_polygon_soup()`.
 ///
 /// CGAL 5.5's named parameters cannot be extended outside CGAL, so the options are a struct,
 /// with the same names and defaults as the parameterizer's setters.
@@ -35,7 +40,7 @@ typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Norm_preserv
 /// \tparam SolverTraits a model of `QuadraticProgramTraits`
 template <typename PolygonMesh,
           typename InitialGuess = XY_min_max_initial_guess,
-          typename SolverTraits = Interior_point_quadratic_program_traits<double> >
+          typename SolverTraits = Norm_preserving_ADMM_solver>
 struct Texture_polygon_mesh_options
 {
   /// vertex handle of the input mesh
@@ -52,7 +57,7 @@ struct Texture_polygon_mesh_options
 };
 
 /// \ingroup PkgNormPreservingParameterization
-/// What `texture_polygon_mesh()` did.
+/// What `texture_polygon_mesh()` or `texture_polygon_soup()` did.
 struct Texture_polygon_mesh_report
 {
   Error_code status = OK;                         ///< result of the call
@@ -65,27 +70,37 @@ struct Texture_polygon_mesh_report
 };
 
 /// \ingroup PkgNormPreservingParameterization
-/// textures a whole polygon mesh: triangulates a copy (adding no vertex), parameterizes every
-/// connected component with `Norm_preserving_parameterizer_3` at one common scale (mesh
-/// units, so texel density is uniform), lays the components side by side with disjoint
-/// bounding boxes, fits the layout into texture space, tiles it, and writes the uv of every
-/// vertex on a face into `uvmap`. Vertices on no face are left as they were.
+/// textures a polygon soup: `points[i]` is vertex `i`, each element of `polygons` lists the
+/// vertex indices of one face. Faces that share a vertex form a connected component; each
+/// component is built as a triangle mesh of its own (triangulated, adding no vertex) and
+/// parameterized with `Norm_preserving_parameterizer_3` at one common scale (mesh units, so
+/// texel density is uniform); the components are laid side by side with disjoint bounding
+/// boxes, the layout is fitted into texture space and tiled, and the uv of every vertex on a
+/// face is written into `uvmap`. Vertices on no face are left as they were. The work is
+/// linear in the size of the soup, however many components it has.
 ///
-/// On failure (`ERROR_EMPTY_MESH`, a face that cannot be added or triangulated, or any
-/// component's error) nothing is written and `report->message` says why.
+/// On failure nothing is written, `report->message` says why, and the code is:
+/// - `ERROR_EMPTY_MESH`: no face;
+/// - `ERROR_NON_TRIANGULAR_MESH`: a face with fewer than three vertices or a repeated one, a
+///   face that makes an edge or a vertex non-manifold or is oriented against a neighbour, or
+///   a face that cannot be triangulated;
+/// - `ERROR_WRONG_PARAMETER`: a face that refers to a missing vertex, a non-finite coordinate
+///   of a vertex on a face, a fixed pair on no face, in two components or not an edge;
+/// - or the error of a component, as `Norm_preserving_parameterizer_3::parameterize()` says.
 ///
-/// \tparam PolygonMesh a model of `FaceListGraph` with an internal `vertex_point` map
-/// \tparam VertexUVMap a model of `WritablePropertyMap` from vertices to a 2D point type
-template <typename PolygonMesh, typename VertexUVMap,
+/// \tparam PointRange a random-access range of 3D points (`x()`, `y()`, `z()`)
+/// \tparam PolygonRange a random-access range of ranges of `std::size_t`
+/// \tparam VertexUVMap a model of `WritablePropertyMap` from `std::size_t` to a 2D point type
+/// \param options its `fixed_pair`, if any, names soup vertex `i` as
+///        `Norm_preserving_triangle_mesh::Vertex_index(i)`
+template <typename PointRange, typename PolygonRange, typename VertexUVMap,
           typename InitialGuess = XY_min_max_initial_guess,
-          typename SolverTraits = Interior_point_quadratic_program_traits<double> >
-Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
-                                const Texture_polygon_mesh_options<PolygonMesh, InitialGuess, SolverTraits>& options = {},
+          typename SolverTraits = Norm_preserving_ADMM_solver>
+Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& polygons, VertexUVMap uvmap,
+                                const Texture_polygon_mesh_options<Norm_preserving_triangle_mesh, InitialGuess, SolverTraits>& options = {},
                                 Texture_polygon_mesh_report* report = nullptr)
 {
-  typedef Norm_preserving_triangle_mesh TM;
   typedef typename boost::property_traits<VertexUVMap>::value_type Point_2;
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
   namespace NP = internal::Norm_preserving;
 
   const auto start = std::chrono::steady_clock::now();
@@ -98,92 +113,114 @@ Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return status;
   };
-  if(faces(mesh).empty())
-    return finish(ERROR_EMPTY_MESH, "the mesh has no face");
+  std::string message;
+  Error_code status = NP::check_polygon_soup(points, polygons, message);
+  if(status != OK)
+    return finish(status, message);
 
-  // Step 1 on a copy with the input's vertex order, so that indices do not depend on the
-  // mesh type.
-  TM tm;
-  auto copy_of = get(CGAL::dynamic_vertex_property_t<typename TM::Vertex_index>(), mesh);
-  std::vector<vertex_descriptor> original;
-  for(vertex_descriptor v : vertices(mesh))
-  {
-    const auto& p = get(CGAL::vertex_point, mesh, v);
-    put(copy_of, v, tm.add_vertex(TM::Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()))));
-    original.push_back(v);
-  }
-  std::vector<typename TM::Vertex_index> polygon;
-  for(auto f : faces(mesh))
-  {
-    polygon.clear();
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      polygon.push_back(get(copy_of, v));
-    if(tm.add_face(polygon) == TM::null_face())
-      return finish(ERROR_NON_TRIANGULAR_MESH, "a face has a repeated vertex or makes the mesh non-manifold");
-  }
-  if(!CGAL::is_triangle_mesh(tm) && !CGAL::Polygon_mesh_processing::triangulate_faces(tm))
-    return finish(ERROR_NON_TRIANGULAR_MESH, "a face could not be triangulated");
-
-  auto component_of = tm.add_property_map<typename TM::Face_index, std::size_t>("f:np_component").first;
-  r.components = CGAL::Polygon_mesh_processing::connected_components(tm, component_of);
-  std::vector<typename TM::Halfedge_index> seeds(r.components, TM::null_halfedge());
-  std::vector<std::size_t> component_of_vertex(num_vertices(tm), r.components); // isolated: none
-  for(auto f : faces(tm))
-  {
-    const std::size_t c = get(component_of, f);
-    if(seeds[c] == TM::null_halfedge())
-      seeds[c] = halfedge(f, tm);
-    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-      component_of_vertex[v] = c;
-  }
+  std::vector<std::size_t> component_of_polygon, component_of_vertex;
+  r.components = NP::soup_components(points.size(), polygons, component_of_polygon, component_of_vertex);
+  std::optional<std::pair<std::size_t, std::size_t> > fixed_pair;
   std::size_t pair_component = r.components;
   if(options.fixed_pair)
   {
-    pair_component = component_of_vertex[get(copy_of, options.fixed_pair->first)];
-    if(pair_component == r.components)
+    fixed_pair = std::make_pair(std::size_t(options.fixed_pair->first), std::size_t(options.fixed_pair->second));
+    if(fixed_pair->first >= points.size() || fixed_pair->second >= points.size())
+      return finish(ERROR_WRONG_PARAMETER, "a fixed vertex is not a vertex of the mesh");
+    pair_component = component_of_vertex[fixed_pair->first];
+    if(pair_component == r.components || component_of_vertex[fixed_pair->second] == r.components)
       return finish(ERROR_WRONG_PARAMETER, "a fixed vertex lies on no face");
+    if(component_of_vertex[fixed_pair->second] != pair_component)
+      return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are not in the same connected component");
   }
 
   // Every component in mesh units (NO_FIT), then one layout and one fit for all.
-  auto tm_uv = tm.add_property_map<typename TM::Vertex_index, Point_2>("v:np_uv").first;
-  auto tm_done = tm.add_property_map<typename TM::Vertex_index, bool>("v:np_done", false).first;
-  Norm_preserving_parameterizer_3<TM, InitialGuess, SolverTraits> parameterizer(options.initial_guess, options.solver);
+  std::vector<std::vector<std::size_t> > members(r.components);
+  for(std::size_t k = 0; k < component_of_polygon.size(); ++k)
+    members[component_of_polygon[k]].push_back(k);
+  std::vector<std::array<double, 2> > uv(points.size(), {0., 0.});
+  Norm_preserving_parameterizer_3<Norm_preserving_triangle_mesh, InitialGuess, SolverTraits>
+    parameterizer(options.initial_guess, options.solver);
   parameterizer.set_texture_fit(NO_FIT);
+  r.reports.reserve(r.components);
   for(std::size_t c = 0; c < r.components; ++c)
   {
-    if(c == pair_component)
-      parameterizer.set_fixed_pair(get(copy_of, options.fixed_pair->first), get(copy_of, options.fixed_pair->second));
-    else
-      parameterizer.set_automatic_fixed_pair();
-    const Error_code status = parameterizer.parameterize(tm, seeds[c], tm_uv, get(CGAL::vertex_index, tm), tm_done);
+    status = NP::parameterize_soup_component(points, polygons, members[c],
+                                             c == pair_component ? fixed_pair : std::nullopt,
+                                             parameterizer, uv, message);
     r.reports.push_back(parameterizer.report());
     if(status != OK)
-      return finish(status, "component " + std::to_string(c) + ": " + parameterizer.report().message);
+      return finish(status, "component " + std::to_string(c) + ": " + message);
     r.objective += parameterizer.report().objective;
   }
 
-  std::vector<std::array<double, 2> > uv(num_vertices(tm));
-  for(auto v : vertices(tm))
-    uv[v] = {get(tm_uv, v).x(), get(tm_uv, v).y()};
   NP::lay_out_components(uv, component_of_vertex, r.components);
   std::vector<std::array<double, 2> > on_faces;
-  for(auto v : vertices(tm))
-    if(get(tm_done, v)) on_faces.push_back(uv[v]);
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(component_of_vertex[i] != r.components) on_faces.push_back(uv[i]);
   NP::fit_to_texture_space(on_faces, options.texture_fit, options.tiles_u, options.tiles_v);
-
   std::size_t k = 0;
-  for(auto v : vertices(tm))
+  for(std::size_t i = 0; i < points.size(); ++i)
   {
-    if(get(tm_done, v)) uv[v] = on_faces[k++];
-    else ++r.isolated_vertices;
-  }
-  for(std::size_t i = 0; i < original.size(); ++i)
-  {
-    const auto v = get(copy_of, original[i]);
-    if(get(tm_done, v))
-      put(uvmap, original[i], Point_2(uv[v][0], uv[v][1]));
+    if(component_of_vertex[i] == r.components)
+    {
+      ++r.isolated_vertices;
+      continue;
+    }
+    put(uvmap, i, Point_2(on_faces[k][0], on_faces[k][1]));
+    ++k;
   }
   return finish(OK, std::string());
+}
+
+/// \ingroup PkgNormPreservingParameterization
+/// textures a whole polygon mesh: `texture_polygon_soup()` on its faces, vertex `i` being the
+/// `i`-th vertex of `vertices(mesh)`, and the uv of every vertex on a face written into
+/// `uvmap`. Vertices on no face are left as they were. Fails as `texture_polygon_soup()`
+/// does, writing nothing.
+///
+/// \tparam PolygonMesh a model of `FaceListGraph` with an internal `vertex_point` map
+/// \tparam VertexUVMap a model of `WritablePropertyMap` from vertices to a 2D point type
+template <typename PolygonMesh, typename VertexUVMap,
+          typename InitialGuess = XY_min_max_initial_guess,
+          typename SolverTraits = Norm_preserving_ADMM_solver>
+Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
+                                const Texture_polygon_mesh_options<PolygonMesh, InitialGuess, SolverTraits>& options = {},
+                                Texture_polygon_mesh_report* report = nullptr)
+{
+  typedef Norm_preserving_triangle_mesh TM;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+
+  // The soup in the input's vertex order, so that indices do not depend on the mesh type.
+  std::vector<TM::Point> points;
+  std::vector<vertex_descriptor> original;
+  auto index_of = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const auto& p = get(CGAL::vertex_point, mesh, v);
+    put(index_of, v, points.size());
+    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    original.push_back(v);
+  }
+  std::vector<std::vector<std::size_t> > polygons;
+  for(auto f : faces(mesh))
+  {
+    polygons.emplace_back();
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      polygons.back().push_back(get(index_of, v));
+  }
+
+  Texture_polygon_mesh_options<TM, InitialGuess, SolverTraits> soup_options;
+  soup_options.initial_guess = options.initial_guess;
+  soup_options.solver = options.solver;
+  soup_options.texture_fit = options.texture_fit;
+  soup_options.tiles_u = options.tiles_u;
+  soup_options.tiles_v = options.tiles_v;
+  if(options.fixed_pair)
+    soup_options.fixed_pair = std::make_pair(TM::Vertex_index(TM::size_type(get(index_of, options.fixed_pair->first))),
+                                             TM::Vertex_index(TM::size_type(get(index_of, options.fixed_pair->second))));
+  return texture_polygon_soup(points, polygons, CGAL::bind_property_maps(CGAL::make_property_map(original), uvmap),
+                              soup_options, report);
 }
 
 } // namespace Surface_mesh_parameterization

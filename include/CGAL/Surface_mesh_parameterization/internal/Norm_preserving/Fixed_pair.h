@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
@@ -27,20 +28,19 @@ inline bool is_edge(const Norm_preserving_geometry& geometry, std::size_t a, std
   return a != b && std::binary_search(geometry.edges.begin(), geometry.edges.end(), e);
 }
 
-// `a`: the vertex of smallest x, lowest index on ties; `b`: its neighbour across the longest
-// L1 edge, lowest index on ties. The component has at least one edge.
-inline std::pair<std::size_t, std::size_t> automatic_fixed_pair(const Norm_preserving_geometry& geometry)
+// The neighbour of `a` across the longest L1 edge, lowest index on ties, among those that
+// `guess` (if given) does not put on the point of `a`; `a` itself if there is none.
+inline std::size_t automatic_partner(const Norm_preserving_geometry& geometry, std::size_t a,
+                                     const std::vector<std::array<double, 2> >* guess = nullptr)
 {
   const auto& points = geometry.points;
-  std::size_t a = 0;
-  for(std::size_t i = 1; i < points.size(); ++i)
-    if(points[i][0] < points[a][0]) a = i;
   std::size_t b = a;
   double longest = -1;
   for(const auto& e : geometry.edges)
   {
     if(e[0] != a && e[1] != a) continue;
     const std::size_t other = e[0] == a ? e[1] : e[0];
+    if(guess != nullptr && (*guess)[other] == (*guess)[a]) continue;
     const double length = l1_distance(points[a], points[other]);
     if(length > longest || (length == longest && other < b))
     {
@@ -48,7 +48,18 @@ inline std::pair<std::size_t, std::size_t> automatic_fixed_pair(const Norm_prese
       b = other;
     }
   }
-  return {a, b};
+  return b;
+}
+
+// `a`: the vertex of smallest x, lowest index on ties; `b`: its automatic partner before any
+// guess. The component has at least one edge.
+inline std::pair<std::size_t, std::size_t> automatic_fixed_pair(const Norm_preserving_geometry& geometry)
+{
+  const auto& points = geometry.points;
+  std::size_t a = 0;
+  for(std::size_t i = 1; i < points.size(); ++i)
+    if(points[i][0] < points[a][0]) a = i;
+  return {a, automatic_partner(geometry, a)};
 }
 
 // Targets (DESIGN.md item 2): `a` at the origin, `b` along the guessed direction from `a` to
