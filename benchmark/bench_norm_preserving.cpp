@@ -1,61 +1,144 @@
-// Google Benchmark timings of the norm-preserving parameterizer against CGAL's LSCM on the
-// same real meshes (LSCM only where the mesh has a border).
+// Google Benchmark on the scaling series: mushroom (a disk) and cow (closed) after 1 to 4
+// steps of Loop subdivision (about 10k, 40k, 150k and 600k vertices). For each mesh, in the
+// same run: ours (default solver, with the time of each step as counters), CGAL's LSCM (cow
+// cut to a disk by cut_to_disk, outside the timing) and, as the yardstick of issue 8, one
+// factorization plus one solve of the mesh's n x n graph Laplacian with the package's sparse
+// Cholesky (CHOLMOD when configured).
+//
+//   bench_norm_preserving [--benchmark_filter=mushroom/2] ...
+// The names are <method>/<mesh>/<subdivision steps>.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Seam_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/subdivision_method_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/cut_to_disk.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
 #include <benchmark/benchmark.h>
 
+#include <map>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 using Kernel = CGAL::Simple_cartesian<double>;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Vertex = Mesh::Vertex_index;
+using Seam_edge_map = Mesh::Property_map<Mesh::Edge_index, bool>;
+using Seam_vertex_map = Mesh::Property_map<Vertex, bool>;
+using Seam_mesh = CGAL::Seam_mesh<Mesh, Seam_edge_map, Seam_vertex_map>;
 
-static Mesh load(const std::string& name)
+// The subdivided meshes, made once per process.
+static const Mesh& subdivided(const std::string& name, int steps)
 {
-  Mesh mesh;
-  CGAL::IO::read_polygon_mesh(std::string(NP_MESH_DIR) + "/" + name + ".off", mesh);
-  return mesh;
+  static std::map<std::pair<std::string, int>, std::unique_ptr<Mesh> > cache;
+  std::unique_ptr<Mesh>& mesh = cache[{name, steps}];
+  if(!mesh)
+  {
+    mesh = std::make_unique<Mesh>();
+    CGAL::IO::read_polygon_mesh(std::string(NP_MESH_DIR) + "/" + name + ".off", *mesh);
+    CGAL::Subdivision_method_3::Loop_subdivision(*mesh, CGAL::parameters::number_of_iterations(steps));
+  }
+  return *mesh;
 }
 
-static void norm_preserving(benchmark::State& state, const std::string& name)
+static void ours(benchmark::State& state, const std::string& name)
 {
-  Mesh mesh = load(name);
+  Mesh mesh = subdivided(name, int(state.range(0)));
   auto uv = mesh.add_property_map<Vertex, Kernel::Point_2>("v:uv").first;
   auto has_uv = mesh.add_property_map<Vertex, bool>("v:has_uv", false).first;
   SMP::Norm_preserving_parameterizer_3<Mesh> parameterizer;
+  SMP::Norm_preserving_timings sum;
   for(auto _ : state)
+  {
     if(parameterizer.parameterize(mesh, *halfedges(mesh).begin(), uv, get(CGAL::vertex_index, mesh), has_uv) != SMP::OK)
       state.SkipWithError(parameterizer.report().message.c_str());
+    const SMP::Norm_preserving_timings& t = parameterizer.report().timings;
+    sum.extraction += t.extraction;
+    sum.guess += t.guess;
+    sum.assembly += t.assembly;
+    sum.factorization += t.factorization;
+    sum.iterations += t.iterations;
+    sum.write_back += t.write_back;
+  }
+  const auto per_run = benchmark::Counter::kAvgIterations;
   state.counters["vertices"] = double(num_vertices(mesh));
+  state.counters["iterations"] = parameterizer.report().solver_iterations;
+  state.counters["s_extract"] = benchmark::Counter(sum.extraction, per_run);
+  state.counters["s_guess"] = benchmark::Counter(sum.guess, per_run);
+  state.counters["s_assemble"] = benchmark::Counter(sum.assembly, per_run);
+  state.counters["s_factor"] = benchmark::Counter(sum.factorization, per_run);
+  state.counters["s_iterate"] = benchmark::Counter(sum.iterations, per_run);
+  state.counters["s_write"] = benchmark::Counter(sum.write_back, per_run);
 }
 
 static void lscm(benchmark::State& state, const std::string& name)
 {
-  Mesh mesh = load(name);
-  auto uv = mesh.add_property_map<Vertex, Kernel::Point_2>("v:uv").first;
-  Mesh::Halfedge_index border = Mesh::null_halfedge();
+  Mesh mesh = subdivided(name, int(state.range(0)));
+  Seam_edge_map seam_edges = mesh.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+  Seam_vertex_map seam_vertices = mesh.add_property_map<Vertex, bool>("v:seam", false).first;
+  Seam_mesh seam_mesh(mesh, seam_edges, seam_vertices);
+  typename boost::graph_traits<Seam_mesh>::halfedge_descriptor border;
+  bool has_border = false;
   for(auto h : halfedges(mesh))
-    if(is_border(h, mesh)) { border = h; break; }
+    if(is_border(h, mesh)) { border = {h, false}; has_border = true; break; }
+  if(!has_border)
+  {
+    const auto cut = SMP::cut_to_disk(seam_mesh, *halfedges(mesh).begin());
+    if(cut.status != SMP::OK) { state.SkipWithError(cut.message.c_str()); return; }
+    border = cut.border_halfedge;
+  }
+  auto uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv").first;
   for(auto _ : state)
-    if(SMP::parameterize(mesh, SMP::LSCM_parameterizer_3<Mesh>(), border, uv) != SMP::OK)
+    if(SMP::parameterize(seam_mesh, SMP::LSCM_parameterizer_3<Seam_mesh>(), border, uv) != SMP::OK)
       state.SkipWithError("LSCM failed");
   state.counters["vertices"] = double(num_vertices(mesh));
 }
 
-BENCHMARK_CAPTURE(norm_preserving, nefertiti, std::string("nefertiti"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(lscm, nefertiti, std::string("nefertiti"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(norm_preserving, mushroom, std::string("mushroom"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(lscm, mushroom, std::string("mushroom"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(norm_preserving, lion, std::string("lion"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(lscm, lion, std::string("lion"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(norm_preserving, cow, std::string("cow"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(norm_preserving, camel, std::string("camel"))->Unit(benchmark::kMillisecond);
+// One factorization and one solve of the graph Laplacian, its first vertex held.
+static void laplacian(benchmark::State& state, const std::string& name)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  const Mesh& mesh = subdivided(name, int(state.range(0)));
+  const int n = int(num_vertices(mesh)) - 1;
+  std::vector<Eigen::Triplet<double> > triplets;
+  for(auto e : edges(mesh))
+  {
+    const int i = int(source(e, mesh)) - 1, j = int(target(e, mesh)) - 1;
+    if(i >= 0) triplets.emplace_back(i, i, 1.);
+    if(j >= 0) triplets.emplace_back(j, j, 1.);
+    if(i >= 0 && j >= 0) triplets.emplace_back(std::max(i, j), std::min(i, j), -1.);
+  }
+  NP::Sparse_matrix matrix(n, n);
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::VectorXd rhs = Eigen::VectorXd::Ones(n);
+  for(auto _ : state)
+  {
+    NP::Sparse_cholesky cholesky(matrix);
+    if(cholesky.info() != Eigen::Success) state.SkipWithError("factorization failed");
+    Eigen::VectorXd x = cholesky.solve(rhs);
+    benchmark::DoNotOptimize(x.data());
+  }
+  state.counters["vertices"] = double(num_vertices(mesh));
+}
+
+// One run per size (the largest take minutes with LSCM); --benchmark_repetitions=N repeats.
+static void series(benchmark::internal::Benchmark* b)
+{
+  b->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1)->DenseRange(1, 4);
+}
+
+BENCHMARK_CAPTURE(ours, mushroom, std::string("mushroom"))->Apply(series);
+BENCHMARK_CAPTURE(lscm, mushroom, std::string("mushroom"))->Apply(series);
+BENCHMARK_CAPTURE(laplacian, mushroom, std::string("mushroom"))->Apply(series);
+BENCHMARK_CAPTURE(ours, cow, std::string("cow"))->Apply(series);
+BENCHMARK_CAPTURE(lscm, cow, std::string("cow"))->Apply(series);
+BENCHMARK_CAPTURE(laplacian, cow, std::string("cow"))->Apply(series);
 
 BENCHMARK_MAIN();

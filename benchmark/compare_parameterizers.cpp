@@ -1,4 +1,5 @@
-// The comparison harness: for a list of meshes, runs ours (each initial guess, no cut) and
+// The comparison harness: for a list of meshes, runs ours (each initial guess with the default
+// ADMM solver, and the XY-MinMax guess with the exact interior-point solver; no cut) and
 // CGAL's LSCM, ARAP, discrete conformal, discrete authalic, mean value coordinates and
 // iterative authalic (on a disk: the mesh cut by cut_to_disk where it is not one), each in its
 // own process, and prints one table as Markdown (stdout) and CSV (--csv), with a plot of time
@@ -28,6 +29,7 @@
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Combination_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Graph_based_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/Interior_point_quadratic_program_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/cut_to_disk.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
@@ -55,7 +57,7 @@ using Seam_vertex_map = Mesh::Property_map<Vertex, bool>;
 using Seam_mesh = CGAL::Seam_mesh<Mesh, Seam_edge_map, Seam_vertex_map>;
 
 const std::vector<std::string> all_methods = {
-  "ours-xy", "ours-combination", "ours-graph", "lscm", "arap",
+  "ours-xy", "ours-combination", "ours-graph", "ours-exact", "lscm", "arap",
   "discrete-conformal", "discrete-authalic", "mean-value", "iterative-authalic"};
 
 struct Options
@@ -166,11 +168,11 @@ double median_seconds(int runs, F&& f)
   return times[times.size() / 2];
 }
 
-template <typename InitialGuess>
+template <typename InitialGuess, typename Solver = SMP::Norm_preserving_ADMM_solver>
 Measurement measure_ours(Mesh& mesh, int runs)
 {
   auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv").first;
-  SMP::Texture_polygon_mesh_options<Mesh, InitialGuess> options;
+  SMP::Texture_polygon_mesh_options<Mesh, InitialGuess, Solver> options;
   options.texture_fit = SMP::NO_FIT;
   Measurement m;
   np_benchmark::reset_peak_memory();
@@ -232,6 +234,8 @@ Measurement measure(const std::string& method, Mesh& mesh, const Topology& t, in
   if(method == "ours-xy") return measure_ours<SMP::XY_min_max_initial_guess>(mesh, runs);
   if(method == "ours-combination") return measure_ours<SMP::Combination_initial_guess>(mesh, runs);
   if(method == "ours-graph") return measure_ours<SMP::Graph_based_initial_guess>(mesh, runs);
+  if(method == "ours-exact")
+    return measure_ours<SMP::XY_min_max_initial_guess, SMP::Interior_point_quadratic_program_traits<double> >(mesh, runs);
   auto with = [&](auto make) {
     return measure_on_disk(mesh, t, runs, [&](SM& sm, auto bhd, auto uv, auto index, auto done) {
       auto parameterizer = make();
