@@ -1,0 +1,93 @@
+# The command-line tool's contract, run by ctest as
+#   cmake -DTOOL=<texture_mesh> -DMESHES=<mesh dir> -DWORK=<scratch dir> -P check_cli.cmake
+# every input format, the options, --help, and clear failures that write nothing.
+
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+
+# Runs the tool with the given arguments; checks its exit status and that stderr/stdout match.
+function(run expected_status expected_output)
+  execute_process(COMMAND "${TOOL}" ${ARGN} WORKING_DIRECTORY "${WORK}"
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL expected_status)
+    message(FATAL_ERROR "texture_mesh ${ARGN}: exit ${status}, expected ${expected_status}\n${out}\n${err}")
+  endif()
+  if(NOT "${err}${out}" MATCHES "${expected_output}")
+    message(FATAL_ERROR "texture_mesh ${ARGN}: output does not match '${expected_output}':\n${out}\n${err}")
+  endif()
+endfunction()
+
+function(expect_nothing_written basename)
+  file(GLOB written "${WORK}/${basename}*")
+  if(written)
+    message(FATAL_ERROR "a failed run left files behind: ${written}")
+  endif()
+endfunction()
+
+function(expect_textured basename)
+  foreach(suffix .obj .mtl .png _uv.svg _report.txt)
+    if(NOT EXISTS "${WORK}/${basename}${suffix}")
+      message(FATAL_ERROR "${basename}${suffix} was not written")
+    endif()
+  endforeach()
+  file(STRINGS "${WORK}/${basename}.obj" v REGEX "^v ")
+  file(STRINGS "${WORK}/${basename}.obj" vt REGEX "^vt ")
+  list(LENGTH v nv)
+  list(LENGTH vt nvt)
+  if(NOT nv EQUAL nvt OR nv EQUAL 0)
+    message(FATAL_ERROR "${basename}.obj: ${nv} vertices but ${nvt} texture coordinates")
+  endif()
+endfunction()
+
+run(0 "usage: texture_mesh.*--tiles MxN" --help)
+run(2 "unknown option --bogus" --bogus)
+run(2 "--tiles takes MxN" --tiles 0x2)
+run(2 "--fixed-pair takes two vertex indices" --fixed-pair 1)
+
+# Inputs that cannot be read or textured: exit 1, a clear message, no file.
+run(1 "cannot read a polygon mesh from .*missing.off" missing.off out_missing)
+expect_nothing_written(out_missing)
+file(WRITE "${WORK}/garbage.off" "this is not a mesh\n")
+run(1 "cannot read a polygon mesh from .*garbage.off" garbage.off out_garbage)
+expect_nothing_written(out_garbage)
+file(WRITE "${WORK}/mesh.xyz" "0 0 0\n")
+run(1 "cannot read a polygon mesh from .*mesh.xyz" mesh.xyz out_unsupported)
+expect_nothing_written(out_unsupported)
+# Two triangles that share only a vertex: a non-manifold vertex.
+file(WRITE "${WORK}/bowtie.off" "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n")
+run(1 "error: .*non-manifold" bowtie.off out_bowtie)
+expect_nothing_written(out_bowtie)
+run(1 "error: .*fixed vertices are not" "${MESHES}/cow.off" out_badpair --fixed-pair 0,2000)
+expect_nothing_written(out_badpair)
+
+# Every input format, and the options.
+run(0 "wrote cow.obj" "${MESHES}/cow.off" cow --guess combination --tiles 2x3 --fit clamp)
+expect_textured(cow)
+run(0 "wrote from_obj.obj" cow.obj from_obj --guess graph)
+expect_textured(from_obj)
+run(0 "wrote sphere.obj" "${MESHES}/sphere.ply" sphere --fit none)
+expect_textured(sphere)
+run(1 "non-manifold.*--repair splits" "${MESHES}/pig.stl" out_pig)
+expect_nothing_written(out_pig)
+run(0 "--repair: split [1-9][0-9]* non-manifold vertices.*wrote pig.obj" "${MESHES}/pig.stl" pig --repair)
+expect_textured(pig)
+
+# --tiles 2x3 with the clamp fit: u within [0,2], v within [0,3], one of them reaching its end.
+file(STRINGS "${WORK}/cow.obj" vt REGEX "^vt ")
+set(max_u 0)
+set(max_v 0)
+foreach(line ${vt})
+  string(REGEX REPLACE "^vt ([^ ]+) ([^ ]+)$" "\\1;\\2" uv "${line}")
+  list(GET uv 0 u)
+  list(GET uv 1 v)
+  if(u GREATER max_u)
+    set(max_u ${u})
+  endif()
+  if(v GREATER max_v)
+    set(max_v ${v})
+  endif()
+endforeach()
+if(max_u GREATER 2.000001 OR max_v GREATER 3.000001 OR (max_u LESS 1.999999 AND max_v LESS 2.999999))
+  message(FATAL_ERROR "--tiles 2x3 --fit clamp: uvs reach (${max_u}, ${max_v}); expected within (2, 3), one end reached")
+endif()
+message(STATUS "texture_mesh: every check passed")
