@@ -81,6 +81,9 @@ struct Scale_fit
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` from vertices to a 2D point type
 /// \tparam VertexParameterizedMap a model of `ReadablePropertyMap` from vertices to `bool`
+/// \param mesh the mesh
+/// \param uvmap the uv of each vertex
+/// \param vpmap `true` for the vertices that have a uv
 /// \param np optional `vertex_point_map` (default: the internal point map of `mesh`)
 template <typename TriangleMesh, typename VertexUVMap, typename VertexParameterizedMap,
           typename NamedParameters = parameters::Default_named_parameters>

@@ -31,14 +31,15 @@ struct Mesh_component
   using Vertex_index_map =
     typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<int> >::type;
   using Vertex_flag_map =
-    typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<bool> >::type;
+    typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<unsigned char> >::type;
 
   Norm_preserving_geometry geometry;
   std::vector<vertex_descriptor> vertices; // index -> vertex
-  Vertex_flag_map contains;                // vertex -> is in the component
+  // vertex -> is in the component; a byte, not a bool, which OpenMesh stores as bits
+  Vertex_flag_map contains;
   Vertex_index_map index;                  // vertex -> index, valid where `contains`
 
-  bool has(vertex_descriptor v) const { return get(contains, v); }
+  bool has(vertex_descriptor v) const { return get(contains, v) != 0; }
 };
 
 // A vertex whose faces form several fans (faces that meet at the vertex only, a "bow tie")
@@ -107,14 +108,14 @@ Error_code extract_component(TriangleMesh& mesh,
   }
 
   // Faces of the component, breadth first; each face validated as a proper triangle.
-  auto in_component = get(CGAL::dynamic_face_property_t<bool>(), mesh);
-  component.contains = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
+  auto in_component = get(CGAL::dynamic_face_property_t<unsigned char>(), mesh);
+  component.contains = get(CGAL::dynamic_vertex_property_t<unsigned char>(), mesh);
   for(face_descriptor f : faces(mesh))
-    put(in_component, f, false);
+    put(in_component, f, 0);
   for(vertex_descriptor v : vertices(mesh))
-    put(component.contains, v, false);
+    put(component.contains, v, 0);
   std::vector<face_descriptor> queue(1, seed);
-  put(in_component, seed, true);
+  put(in_component, seed, 1);
   for(std::size_t k = 0; k < queue.size(); ++k)
   {
     const face_descriptor f = queue[k];
@@ -124,11 +125,11 @@ Error_code extract_component(TriangleMesh& mesh,
     {
       if(degree < 3) corners[degree] = target(fh, mesh);
       ++degree;
-      put(component.contains, target(fh, mesh), true);
+      put(component.contains, target(fh, mesh), 1);
       const face_descriptor g = face(opposite(fh, mesh), mesh);
       if(g != GT::null_face() && !get(in_component, g))
       {
-        put(in_component, g, true);
+        put(in_component, g, 1);
         queue.push_back(g);
       }
     }

@@ -1,0 +1,76 @@
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_INDEXED_MESH_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_INDEXED_MESH_H
+
+#include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgNormPreservingParameterization
+/// Adapts a user's indexed mesh type, which need not be a CGAL graph, to
+/// `texture_indexed_mesh()`. There is no general definition: specialize it for your type
+/// (or pass any class with the same static members as the `Traits` argument). A model of the
+/// concept `IndexedMeshTraits`, which asks for:
+/// - `static std::size_t number_of_vertices(const Mesh&)`;
+/// - `static P point(const Mesh&, std::size_t i)`, the position of vertex `i`, where `P` has
+///   `x()`, `y()`, `z()` convertible to `double`;
+/// - `static std::size_t number_of_faces(const Mesh&)`;
+/// - `static R face(const Mesh&, std::size_t f)`, the vertex indices of face `f` in order,
+///   `R` being any range of integers (a triangle, a quad, any polygon).
+///
+/// \code
+/// struct My_mesh { std::vector<std::array<double, 3> > xyz; std::vector<std::array<int, 3> > tris; };
+/// template <> struct CGAL::Surface_mesh_parameterization::Indexed_mesh_traits<My_mesh> {
+///   static std::size_t number_of_vertices(const My_mesh& m) { return m.xyz.size(); }
+///   static CGAL::Simple_cartesian<double>::Point_3 point(const My_mesh& m, std::size_t i)
+///   { return {m.xyz[i][0], m.xyz[i][1], m.xyz[i][2]}; }
+///   static std::size_t number_of_faces(const My_mesh& m) { return m.tris.size(); }
+///   static const std::array<int, 3>& face(const My_mesh& m, std::size_t f) { return m.tris[f]; }
+/// };
+/// \endcode
+/// \tparam IndexedMesh the user's mesh type
+template <typename IndexedMesh>
+struct Indexed_mesh_traits;
+
+/// \ingroup PkgNormPreservingParameterization
+/// textures a user's indexed mesh exactly as `texture_polygon_mesh()` textures the same
+/// vertices and faces held in a CGAL mesh (the same uvs, bit for bit): `texture_polygon_soup()`
+/// on the vertices and faces that `traits` reads, the uv of vertex `i` written as
+/// `put(uvmap, i, uv)`. Vertices on no face are left as they were; on failure nothing is
+/// written. The options' `fixed_pair`, if any, names vertex `i` as
+/// `Norm_preserving_triangle_mesh::Vertex_index(i)`.
+///
+/// \tparam IndexedMesh the user's mesh type
+/// \tparam VertexUVMap a model of `WritablePropertyMap` from `std::size_t` to a 2D point type
+/// \tparam Traits a model of `IndexedMeshTraits`; default `Indexed_mesh_traits<IndexedMesh>`
+template <typename IndexedMesh, typename VertexUVMap,
+          typename InitialGuess = XY_min_max_initial_guess,
+          typename SolverTraits = Norm_preserving_ADMM_solver,
+          typename Traits = Indexed_mesh_traits<IndexedMesh> >
+Error_code texture_indexed_mesh(const IndexedMesh& mesh, VertexUVMap uvmap,
+                                const Texture_polygon_mesh_options<Norm_preserving_triangle_mesh, InitialGuess, SolverTraits>& options = {},
+                                Texture_polygon_mesh_report* report = nullptr,
+                                const Traits& traits = Traits())
+{
+  typedef Norm_preserving_triangle_mesh::Point Point_3;
+  std::vector<Point_3> points;
+  points.reserve(traits.number_of_vertices(mesh));
+  for(std::size_t i = 0; i < traits.number_of_vertices(mesh); ++i)
+  {
+    const auto& p = traits.point(mesh, i);
+    points.emplace_back(double(p.x()), double(p.y()), double(p.z()));
+  }
+  std::vector<std::vector<std::size_t> > polygons(traits.number_of_faces(mesh));
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(const auto& i : traits.face(mesh, f))
+      polygons[f].push_back(std::size_t(i));
+  return texture_polygon_soup(points, polygons, uvmap, options, report);
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
