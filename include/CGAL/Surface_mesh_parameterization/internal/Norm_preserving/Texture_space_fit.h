@@ -28,11 +28,12 @@ inline void fit_to_texture_space(std::vector<std::array<double, 2> >& uv, Textur
         low[c] = (std::min)(low[c], p[c]);
         high[c] = (std::max)(high[c], p[c]);
       }
+    // Divided, not multiplied by 1 / extent: the farthest point lands on 1 exactly.
     const double extent = (std::max)(high[0] - low[0], high[1] - low[1]);
-    const double scale = extent > 0 ? 1. / extent : 1.;
+    const double divisor = extent > 0 ? extent : 1.;
     for(auto& p : uv)
       for(int c = 0; c < 2; ++c)
-        p[c] = (p[c] - low[c]) * scale;
+        p[c] = (p[c] - low[c]) / divisor;
   }
   else if(fit == CLAMP_FIT)
   {
