@@ -91,8 +91,12 @@ struct Texture_polygon_mesh_report
 /// \tparam PointRange a random-access range of 3D points (`x()`, `y()`, `z()`)
 /// \tparam PolygonRange a random-access range of ranges of `std::size_t`
 /// \tparam VertexUVMap a model of `WritablePropertyMap` from `std::size_t` to a 2D point type
+/// \param points the vertex positions
+/// \param polygons the faces, as vertex indices in order around each
+/// \param uvmap receives the uv of vertex `i` as `put(uvmap, i, uv)`
 /// \param options its `fixed_pair`, if any, names soup vertex `i` as
 ///        `Norm_preserving_triangle_mesh::Vertex_index(i)`
+/// \param report if not null, receives what the call did
 template <typename PointRange, typename PolygonRange, typename VertexUVMap,
           typename InitialGuess = XY_min_max_initial_guess,
           typename SolverTraits = Norm_preserving_ADMM_solver>
@@ -195,9 +199,10 @@ Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
   std::vector<TM::Point> points;
   std::vector<vertex_descriptor> original;
   auto index_of = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
+  const auto ppmap = get(CGAL::vertex_point, mesh);
   for(vertex_descriptor v : vertices(mesh))
   {
-    const auto& p = get(CGAL::vertex_point, mesh, v);
+    const auto& p = get(ppmap, v);
     put(index_of, v, points.size());
     points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     original.push_back(v);
