@@ -1,5 +1,7 @@
 // The comparison harness: for a list of meshes, runs ours (each initial guess with the default
-// ADMM solver, and the XY-MinMax guess with the exact interior-point solver; no cut) and
+// ADMM solver, and the XY-MinMax guess with the exact interior-point solver; no cut; and the
+// XY-MinMax guess with sign refinement, Euclidean refinement or both, and the Euclidean
+// refinement after a loosely solved QP, see doc/refinement.md) and
 // CGAL's LSCM, ARAP, discrete conformal, discrete authalic, mean value coordinates and
 // iterative authalic (on a disk: the mesh cut by cut_to_disk where it is not one), each in its
 // own process, and prints one table as Markdown (stdout) and CSV (--csv), with a plot of time
@@ -57,7 +59,7 @@ using Seam_vertex_map = Mesh::Property_map<Vertex, bool>;
 using Seam_mesh = CGAL::Seam_mesh<Mesh, Seam_edge_map, Seam_vertex_map>;
 
 const std::vector<std::string> all_methods = {
-  "ours-xy", "ours-combination", "ours-graph", "ours-exact", "lscm", "arap",
+  "ours-xy", "ours-combination", "ours-graph", "ours-exact", "ours-signs", "ours-euclid", "ours-both", "ours-euclid-fast", "lscm", "arap",
   "discrete-conformal", "discrete-authalic", "mean-value", "iterative-authalic"};
 
 struct Options
@@ -168,12 +170,22 @@ double median_seconds(int runs, F&& f)
   return times[times.size() / 2];
 }
 
+// The refinements of doc/refinement.md: at most 10 rounds of sign refinement, at most 1000
+// steps of the Euclidean refinement, each with its default tolerance; "ours-euclid-fast" solves
+// the QP, only the refinement's start, to 1e-2 instead of the default 5e-5.
+const int harness_sign_rounds = 10, harness_euclidean_iterations = 1000;
+const double harness_fast_qp_tolerance = 1e-2;
+
 template <typename InitialGuess, typename Solver = SMP::Norm_preserving_ADMM_solver>
-Measurement measure_ours(Mesh& mesh, int runs)
+Measurement measure_ours(Mesh& mesh, int runs, int sign_rounds = 0, int euclidean_iterations = 0,
+                         const Solver& solver = Solver())
 {
   auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv").first;
   SMP::Texture_polygon_mesh_options<Mesh, InitialGuess, Solver> options;
+  options.solver = solver;
   options.texture_fit = SMP::NO_FIT;
+  options.sign_refinement_rounds = sign_rounds;
+  options.euclidean_refinement_iterations = euclidean_iterations;
   Measurement m;
   np_benchmark::reset_peak_memory();
   m.seconds = median_seconds(runs, [&] {
@@ -236,6 +248,14 @@ Measurement measure(const std::string& method, Mesh& mesh, const Topology& t, in
   if(method == "ours-graph") return measure_ours<SMP::Graph_based_initial_guess>(mesh, runs);
   if(method == "ours-exact")
     return measure_ours<SMP::XY_min_max_initial_guess, SMP::Interior_point_quadratic_program_traits<double> >(mesh, runs);
+  if(method == "ours-signs") return measure_ours<SMP::XY_min_max_initial_guess>(mesh, runs, harness_sign_rounds);
+  if(method == "ours-euclid")
+    return measure_ours<SMP::XY_min_max_initial_guess>(mesh, runs, 0, harness_euclidean_iterations);
+  if(method == "ours-both")
+    return measure_ours<SMP::XY_min_max_initial_guess>(mesh, runs, harness_sign_rounds, harness_euclidean_iterations);
+  if(method == "ours-euclid-fast")
+    return measure_ours<SMP::XY_min_max_initial_guess>(mesh, runs, 0, harness_euclidean_iterations,
+                                                       SMP::Norm_preserving_ADMM_solver(harness_fast_qp_tolerance));
   auto with = [&](auto make) {
     return measure_on_disk(mesh, t, runs, [&](SM& sm, auto bhd, auto uv, auto index, auto done) {
       auto parameterizer = make();

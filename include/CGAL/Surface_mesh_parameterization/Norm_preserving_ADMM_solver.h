@@ -60,8 +60,29 @@ public:
              const std::array<internal::Norm_preserving::Fixed_vertex, 2>& fixed,
              std::vector<std::array<double, 2> >& uv)
   {
+    return record(internal::Norm_preserving::solve_sign_constrained_admm(geometry, l1_lengths, signs, fixed,
+                                                                         m_settings, uv));
+  }
+
+  /// solves Eq. 5 as above, reusing the Laplacian factorization and starting from the edge
+  /// values and multipliers that the previous solve on the same geometry and fixed pair left
+  /// in `state` (a cold start if there is none), and leaves its own there. `signs` may differ
+  /// from the previous ones; they must be those of the values `order` (null: `uv`) with the
+  /// tie rule of the parameterizer. Called by its refinements.
+  bool solve(const Norm_preserving_geometry& geometry, const std::vector<double>& l1_lengths,
+             const internal::Norm_preserving::Edge_signs& signs,
+             const std::array<internal::Norm_preserving::Fixed_vertex, 2>& fixed,
+             std::vector<std::array<double, 2> >& uv, internal::Norm_preserving::Admm_state& state,
+             const std::vector<std::array<double, 2> >* order = nullptr)
+  {
+    return record(internal::Norm_preserving::solve_sign_constrained_admm(geometry, l1_lengths, signs, fixed,
+                                                                         m_settings, uv, &state, order));
+  }
+
+private:
+  bool record(const internal::Norm_preserving::Admm_result& result)
+  {
     namespace NP = internal::Norm_preserving;
-    const NP::Admm_result result = NP::solve_sign_constrained_admm(geometry, l1_lengths, signs, fixed, m_settings, uv);
     m_statistics = Norm_preserving_ADMM_statistics();
     m_statistics.iterations = result.iterations;
     m_statistics.primal_residual = result.primal_residual;
@@ -87,7 +108,6 @@ public:
     return true;
   }
 
-private:
   internal::Norm_preserving::Admm_settings m_settings;
   Norm_preserving_ADMM_statistics m_statistics;
 };

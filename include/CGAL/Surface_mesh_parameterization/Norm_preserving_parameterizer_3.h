@@ -9,8 +9,10 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Fixed_pair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Mesh_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_refinement.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Similarity_transform.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Solver_statistics.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Stress_majorization.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Texture_space_fit.h>
 
 #include <CGAL/Default.h>
@@ -92,6 +94,30 @@ public:
   void set_texture_fit(Texture_fit fit) { m_fit = fit; }
   /// sets the `m x n` tiling: `u` is scaled by `m` and `v` by `n` after the fit; default 1 x 1.
   void set_tiling(int m, int n) { m_tiles = {m, n}; }
+  /// sign refinement (beyond the paper): after the QP, up to `max_rounds` times, takes the
+  /// signs from the solution, turning the zero differences the way Eq. 3 decreases, and
+  /// solves again (warm-started with the default solver); stops when a round lowers Eq. 3 by
+  /// at most `tolerance` (relative) or not at all. Eq. 3 never increases. Default: off (0).
+  /// \param max_rounds at least 0; 0 turns it off
+  /// \param tolerance at least 0
+  void set_sign_refinement(int max_rounds, double tolerance = 1e-3)
+  {
+    m_sign_refinement = {max_rounds, tolerance};
+  }
+  /// Euclidean refinement (beyond the paper): after the QP (and the sign refinement), minimizes
+  /// the Euclidean objective `sum (||P_i - P_j||_2 - ||T_i - T_j||_2)^2` (Eq. 2 with q = 2) from
+  /// the solution scaled to fit, the fixed pair held at its Euclidean distance, by stress
+  /// majorization: at most `max_iterations` steps, each one solve with the Laplacian factored
+  /// once, stopping when a step lowers the objective by at most `tolerance` (relative); it never
+  /// increases. The result no longer satisfies the sign constraints. Default: off (0).
+  /// The QP is then only its start: a loose solver tolerance (`Norm_preserving_ADMM_solver(1e-2)`)
+  /// gives the same result faster (doc/refinement.md).
+  /// \param max_iterations at least 0; 0 turns it off
+  /// \param tolerance at least 0
+  void set_euclidean_refinement(int max_iterations, double tolerance = 1e-3)
+  {
+    m_euclidean_refinement = {max_iterations, tolerance};
+  }
 
   /// the initial guess.
   const Initial_guess& initial_guess() const { return m_guess; }
@@ -134,8 +160,8 @@ public:
       }
     m_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Norm_preserving_timings& t = m_report.timings;
-    m_report.timings.write_back =
-      (std::max)(0., m_report.seconds - t.extraction - t.guess - t.assembly - t.factorization - t.iterations);
+    m_report.timings.write_back = (std::max)(0., m_report.seconds - t.extraction - t.guess - t.assembly - t.factorization
+                                                   - t.iterations - t.sign_refinement - t.euclidean_refinement);
     return m_report.status;
   }
 
@@ -161,6 +187,9 @@ private:
       step_start = now;
       return seconds;
     };
+    if(m_sign_refinement.max_rounds < 0 || !(m_sign_refinement.tolerance >= 0)
+       || m_euclidean_refinement.max_iterations < 0 || !(m_euclidean_refinement.tolerance >= 0))
+      return fail(ERROR_WRONG_PARAMETER, "a refinement has a negative iteration limit or tolerance");
     Error_code status = NP::extract_component(mesh, bhd, component, m_report.message);
     if(status != OK)
       return status;
@@ -213,19 +242,35 @@ private:
     uv[a] = fixed[0].target;
     uv[b] = fixed[1].target;
 
-    const NP::Edge_signs signs = NP::edge_signs(geometry, uv);
+    NP::Edge_signs signs = NP::edge_signs(geometry, uv);
     m_report.initial_objective = NP::sign_constrained_objective(geometry, lengths, signs, uv) * unit * unit;
     m_report.constraints = 2 * geometry.edges.size();
     m_report.timings.guess = lap();
 
-    status = solve_qp(geometry, lengths, signs, fixed, uv);
+    NP::Admm_state state; // shared by the QP and the refinements (default solver)
+    const bool refined = m_sign_refinement.max_rounds > 0 || m_euclidean_refinement.max_iterations > 0;
+    status = solve_qp(geometry, lengths, signs, fixed, uv, refined ? &state : nullptr);
     if(status != OK)
       return status;
+    if(m_sign_refinement.max_rounds > 0)
+    {
+      lap();
+      refine_signs(geometry, lengths, fixed, signs, uv, state, unit);
+      m_report.timings.sign_refinement = lap();
+    }
 
     m_report.objective = NP::l1_norm_objective(geometry, lengths, uv) * unit * unit;
     const auto extent = NP::sign_constraint_extent(geometry, signs, uv, 1e-8);
     m_report.max_constraint_violation = (std::max)(0., -extent.first) * unit;
     m_report.active_constraints = extent.second;
+    if(m_euclidean_refinement.max_iterations > 0)
+    {
+      lap();
+      status = refine_euclidean(geometry, fixed, uv, state, unit);
+      m_report.timings.euclidean_refinement = lap();
+      if(status != OK)
+        return status;
+    }
 
     for(auto& p : uv)
       for(int c = 0; c < 2; ++c)
@@ -255,16 +300,18 @@ private:
     return OK;
   }
 
+  // `state`, if given, keeps the default solver's factorization for the refinements.
   Error_code solve_qp(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                       const internal::Norm_preserving::Edge_signs& signs,
                       const std::array<internal::Norm_preserving::Fixed_vertex, 2>& fixed,
-                      std::vector<std::array<double, 2> >& uv)
+                      std::vector<std::array<double, 2> >& uv, internal::Norm_preserving::Admm_state* state)
   {
     namespace NP = internal::Norm_preserving;
     if constexpr(std::is_same<Solver_traits, Norm_preserving_ADMM_solver>::value)
     {
       Solver_traits solver = m_solver;
-      const bool solved = solver.solve(geometry, lengths, signs, fixed, uv);
+      const bool solved = state ? solver.solve(geometry, lengths, signs, fixed, uv, *state)
+                                : solver.solve(geometry, lengths, signs, fixed, uv);
       const Norm_preserving_ADMM_statistics& statistics = solver.statistics();
       m_report.has_solver_statistics = true;
       m_report.solver_status = statistics.status;
@@ -313,12 +360,64 @@ private:
     return OK;
   }
 
+  // Beyond the paper: re-solve with the signs of the solution while Eq. 3 decreases.
+  void refine_signs(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                    const std::array<internal::Norm_preserving::Fixed_vertex, 2>& fixed,
+                    internal::Norm_preserving::Edge_signs& signs, std::vector<std::array<double, 2> >& uv,
+                    internal::Norm_preserving::Admm_state& state, double unit)
+  {
+    namespace NP = internal::Norm_preserving;
+    auto solve = [&](const NP::Edge_signs& next, const NP::UV_vector& order, NP::UV_vector& candidate) {
+      if constexpr(std::is_same<Solver_traits, Norm_preserving_ADMM_solver>::value)
+      {
+        Solver_traits solver = m_solver;
+        return solver.solve(geometry, lengths, next, fixed, candidate, state, &order);
+      }
+      else
+      {
+        (void)order;
+        const Norm_preserving_report kept = m_report; // a round's solver report is not the call's
+        const bool solved = solve_general_qp(geometry, lengths, next, fixed, candidate) == OK;
+        m_report = kept;
+        return solved;
+      }
+    };
+    const std::vector<double> objectives =
+      NP::refine_signs(geometry, lengths, fixed, m_sign_refinement, signs, uv, solve);
+    m_report.sign_refinement_rounds = int(objectives.size()) - 1;
+    for(double objective : objectives)
+      m_report.sign_refinement_objectives.push_back(objective * unit * unit);
+  }
+
+  // Beyond the paper: the Euclidean objective by stress majorization, from the QP solution.
+  Error_code refine_euclidean(const Norm_preserving_geometry& geometry,
+                              std::array<internal::Norm_preserving::Fixed_vertex, 2> fixed,
+                              std::vector<std::array<double, 2> >& uv,
+                              const internal::Norm_preserving::Admm_state& state, double unit)
+  {
+    namespace NP = internal::Norm_preserving;
+    const std::vector<double> lengths = NP::edge_euclidean_lengths(geometry);
+    if(!NP::euclidean_start(geometry, lengths, fixed, uv))
+      return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the Euclidean refinement failed: the solution has no extent");
+    const NP::Stress_majorization_result result =
+      NP::majorize_stress(geometry, lengths, fixed, m_euclidean_refinement, uv, state.factored ? &state.cholesky : nullptr);
+    m_report.euclidean_iterations = result.iterations;
+    for(double stress : result.stress)
+      m_report.euclidean_stress.push_back(stress * unit * unit);
+    if(!result.solved)
+      return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM,
+                  "the Euclidean refinement failed: the graph Laplacian could not be factored or a value overflowed");
+    return OK;
+  }
+
   Initial_guess m_guess;
   Solver_traits m_solver;
   Pair_choice m_pair_choice = Pair_choice::HALFEDGE;
   vertex_descriptor m_a, m_b;
   Texture_fit m_fit = UNIFORM_FIT;
   std::array<int, 2> m_tiles = {1, 1};
+  internal::Norm_preserving::Sign_refinement_settings m_sign_refinement = {0, 1e-3};
+  internal::Norm_preserving::Stress_majorization_settings m_euclidean_refinement = {0, 1e-3};
   Norm_preserving_report m_report;
 };
 

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
@@ -28,6 +29,8 @@ struct Norm_preserving_timings
   double assembly = 0;      ///< setting up the QP (the Laplacian, for the ADMM solver)
   double factorization = 0; ///< the ADMM solver's Laplacian factorization (0 for other solvers)
   double iterations = 0;    ///< the solver's iterations (the whole solve, for other solvers)
+  double sign_refinement = 0;      ///< the rounds of sign refinement (their QP solves included)
+  double euclidean_refinement = 0; ///< the Euclidean refinement (a factorization included for solvers other than ADMM)
   double write_back = 0;    ///< the rest: the final objective, the fit into texture space, the uv map
 };
 
@@ -43,9 +46,11 @@ struct Norm_preserving_report
   std::size_t fixed_a = 0;             ///< component index of the first fixed vertex
   std::size_t fixed_b = 0;             ///< component index of the second fixed vertex
   double initial_objective = 0;        ///< Eq. 4 at the transformed initial guess
-  double objective = 0;                ///< Eq. 4 (equal to Eq. 3) at the solution
-  double max_constraint_violation = 0; ///< largest violation of a sign constraint
-  std::size_t active_constraints = 0;  ///< sign constraints at equality (within 1e-8 mean edge length)
+  /// Eq. 4 (equal to Eq. 3) at the solution of the QP, after the sign refinement and before
+  /// the Euclidean refinement (which minimizes another objective)
+  double objective = 0;
+  double max_constraint_violation = 0; ///< largest violation of a sign constraint (of the final signs), at the same point
+  std::size_t active_constraints = 0;  ///< sign constraints at equality (within 1e-8 mean edge length), at the same point
   std::size_t constraints = 0;         ///< sign constraints, two per edge
   /// how the QP solver ended: on an iteration or time limit the uvs are the best feasible
   /// point it found, and `message` says so
@@ -53,6 +58,15 @@ struct Norm_preserving_report
   bool has_solver_statistics = false;  ///< whether the solver reported the two fields below
   int solver_iterations = 0;           ///< iterations of the QP solver
   double kkt_residual = 0;             ///< largest residual the solver reports on the normalized QP (edge lengths ~ 1)
+  int sign_refinement_rounds = 0;      ///< rounds of sign refinement kept (each lowered Eq. 3)
+  /// Eq. 3 at the QP solution, then after each round kept: non-increasing; empty when the
+  /// sign refinement is off
+  std::vector<double> sign_refinement_objectives;
+  int euclidean_iterations = 0;        ///< stress-majorization steps of the Euclidean refinement
+  /// the Euclidean objective `sum (||P_i - P_j||_2 - ||T_i - T_j||_2)^2` at the start of the
+  /// Euclidean refinement (the QP solution scaled to fit), then after each step:
+  /// non-increasing; empty when the refinement is off
+  std::vector<double> euclidean_stress;
   double seconds = 0;                  ///< wall-clock time of the call
   Norm_preserving_timings timings;     ///< the same time, step by step
 };

@@ -51,6 +51,10 @@ struct Texture_polygon_mesh_options
   Texture_fit texture_fit = UNIFORM_FIT;       ///< fit of the whole layout into texture space
   int tiles_u = 1;                             ///< `m` of the `m x n` tiling
   int tiles_v = 1;                             ///< `n` of the `m x n` tiling
+  int sign_refinement_rounds = 0;              ///< `max_rounds` of `set_sign_refinement()`; 0: off
+  double sign_refinement_tolerance = 1e-3;     ///< `tolerance` of `set_sign_refinement()`
+  int euclidean_refinement_iterations = 0;     ///< `max_iterations` of `set_euclidean_refinement()`; 0: off
+  double euclidean_refinement_tolerance = 1e-3; ///< `tolerance` of `set_euclidean_refinement()`
   /// the fixed pair of the component that contains it (adjacent vertices); every other
   /// component, and all if empty, uses the automatic pair
   std::optional<std::pair<vertex_descriptor, vertex_descriptor> > fixed_pair;
@@ -146,6 +150,8 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
   Norm_preserving_parameterizer_3<Norm_preserving_triangle_mesh, InitialGuess, SolverTraits>
     parameterizer(options.initial_guess, options.solver);
   parameterizer.set_texture_fit(NO_FIT);
+  parameterizer.set_sign_refinement(options.sign_refinement_rounds, options.sign_refinement_tolerance);
+  parameterizer.set_euclidean_refinement(options.euclidean_refinement_iterations, options.euclidean_refinement_tolerance);
   r.reports.reserve(r.components);
   for(std::size_t c = 0; c < r.components; ++c)
   {
@@ -221,6 +227,10 @@ Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
   soup_options.texture_fit = options.texture_fit;
   soup_options.tiles_u = options.tiles_u;
   soup_options.tiles_v = options.tiles_v;
+  soup_options.sign_refinement_rounds = options.sign_refinement_rounds;
+  soup_options.sign_refinement_tolerance = options.sign_refinement_tolerance;
+  soup_options.euclidean_refinement_iterations = options.euclidean_refinement_iterations;
+  soup_options.euclidean_refinement_tolerance = options.euclidean_refinement_tolerance;
   if(options.fixed_pair)
     soup_options.fixed_pair = std::make_pair(TM::Vertex_index(TM::size_type(get(index_of, options.fixed_pair->first))),
                                              TM::Vertex_index(TM::size_type(get(index_of, options.fixed_pair->second))));

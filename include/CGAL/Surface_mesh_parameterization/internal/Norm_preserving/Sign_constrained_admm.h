@@ -17,10 +17,16 @@
 // |Ax - z| and the dual residual |A'(z - z_prev)| both fall under the tolerance times |l1|
 // (the residuals alone overshoot: 700 iterations where 140 suffice on mushroom subdivided
 // once). The returned point is the last feasible one, so it satisfies every constraint exactly.
+//
+// Sign refinement re-solves with other signs on the same mesh and fixed pair: it passes an
+// Admm_state, which keeps the factored Laplacian and the last edge values and multipliers
+// (a warm start), and the order of the new signs (the vertex values they were taken from).
+// Without a state the solve is the cold one above, unchanged.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_feasible_projection.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Two_column_cholesky.h>
@@ -56,6 +62,15 @@ struct Admm_result
   double assembly_seconds = 0, factorization_seconds = 0, iteration_seconds = 0;
 };
 
+// What one solve leaves to the next on the same mesh and fixed pair.
+struct Admm_state
+{
+  Two_column_cholesky cholesky;                // the free-vertex Laplacian, once factored
+  bool factored = false;
+  std::vector<std::array<double, 2> > z, w;    // edge values and scaled multipliers; empty: cold start
+  Edge_signs signs;                            // the signs they belong to
+};
+
 // argmin over a, b >= 0 of (l - a - b)^2 + rho/2 ((a - ca)^2 + (b - cb)^2), for l >= 0.
 inline std::array<double, 2> edge_step(double l, double ca, double cb, double rho)
 {
@@ -73,11 +88,15 @@ inline std::array<double, 2> edge_step(double l, double ca, double cb, double rh
 }
 
 // Solves Eq. 5 from `uv` (the transformed guess, which satisfies the constraints) and
-// writes the solution to `uv`.
+// writes the solution to `uv`. With a `state`, reuses its factorization and starts from its
+// edge values and multipliers when it has them, and leaves them there for the next solve;
+// `order` (default `uv`) gives the values the signs were taken from, whose order (with the
+// tie rule of edge_signs()) is a topological order of the signs.
 inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& geometry,
                                                const std::vector<double>& lengths, const Edge_signs& signs,
                                                const std::array<Fixed_vertex, 2>& fixed,
-                                               const Admm_settings& settings, UV_vector& uv)
+                                               const Admm_settings& settings, UV_vector& uv,
+                                               Admm_state* state = nullptr, const UV_vector* order = nullptr)
 {
   typedef std::chrono::steady_clock Clock;
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -87,42 +106,48 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   const int check_every = 10, objective_window = 50;
   const std::size_t n = geometry.points.size(), m = geometry.edges.size();
   Admm_result result;
-  const Sign_feasible_projection projection(geometry, signs, fixed, uv); // ordered by the guess
+  const Sign_feasible_projection projection(geometry, signs, fixed, order ? *order : uv); // ordered by the guess
 
   // Free vertices and the Laplacian D'D among them.
-  std::vector<int> free_index(n, -1);
-  int free_count = 0;
-  for(std::size_t i = 0; i < n; ++i)
-    if(i != fixed[0].index && i != fixed[1].index)
-      free_index[i] = free_count++;
-  std::vector<Eigen::Triplet<double> > triplets;
-  triplets.reserve(3 * m);
-  for(const auto& e : geometry.edges)
+  const std::vector<int> free_index = free_vertex_indices(n, fixed);
+  const int free_count = int(std::count_if(free_index.begin(), free_index.end(), [](int i) { return i >= 0; }));
+  Two_column_cholesky local_cholesky;
+  Two_column_cholesky& cholesky = state ? state->cholesky : local_cholesky;
+  if(!state || !state->factored)
   {
-    const int fi = free_index[e[0]], fj = free_index[e[1]];
-    if(fi >= 0) triplets.emplace_back(fi, fi, 1.);
-    if(fj >= 0) triplets.emplace_back(fj, fj, 1.);
-    if(fi >= 0 && fj >= 0) triplets.emplace_back((std::max)(fi, fj), (std::min)(fi, fj), -1.);
+    const Sparse_matrix laplacian = free_vertex_laplacian(geometry, free_index);
+    result.assembly_seconds = seconds_since(start);
+    start = Clock::now();
+    const bool factored = cholesky.compute(laplacian);
+    result.factorization_seconds = seconds_since(start);
+    if(!factored)
+      return result;
+    if(state)
+      state->factored = true;
   }
-  Sparse_matrix laplacian(free_count, free_count);
-  laplacian.setFromTriplets(triplets.begin(), triplets.end());
-  result.assembly_seconds = seconds_since(start);
-  start = Clock::now();
-  Two_column_cholesky cholesky;
-  const bool factored = cholesky.compute(laplacian);
-  result.factorization_seconds = seconds_since(start);
-  if(!factored)
-    return result;
   start = Clock::now();
 
-  // Edge values z = (a, b), scaled multipliers w, from the guess.
+  // Edge values z = (a, b), scaled multipliers w, from the guess (or the state).
   std::vector<std::array<double, 2> > z(m), w(m, {0., 0.});
   auto edge_value = [&](std::size_t e, int c) {
     return signs[e][c] * (uv[geometry.edges[e][0]][c] - uv[geometry.edges[e][1]][c]);
   };
-  for(std::size_t e = 0; e < m; ++e)
-    for(int c = 0; c < 2; ++c)
-      z[e][c] = (std::max)(0., edge_value(e, c));
+  if(state && state->z.size() == m && state->w.size() == m && state->signs.size() == m)
+  {
+    z.swap(state->z);
+    w.swap(state->w);
+    for(std::size_t e = 0; e < m; ++e) // a turned sign starts over from the point
+      for(int c = 0; c < 2; ++c)
+        if(state->signs[e][c] != signs[e][c])
+        {
+          z[e][c] = (std::max)(0., edge_value(e, c));
+          w[e][c] = 0.;
+        }
+  }
+  else
+    for(std::size_t e = 0; e < m; ++e)
+      for(int c = 0; c < 2; ++c)
+        z[e][c] = (std::max)(0., edge_value(e, c));
   double l1_norm = 0;
   for(double l : lengths) l1_norm += l * l;
   l1_norm = (std::max)(std::sqrt(l1_norm), std::numeric_limits<double>::min());
@@ -140,13 +165,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     {
       const std::size_t i = geometry.edges[e][0], j = geometry.edges[e][1];
       for(int c = 0; c < 2; ++c)
-      {
-        double r = signs[e][c] * (z[e][c] - w[e][c]);
-        if(free_index[i] < 0) r -= uv[i][c];
-        if(free_index[j] < 0) r += uv[j][c];
-        if(free_index[i] >= 0) rhs[2 * std::size_t(free_index[i]) + c] += r;
-        if(free_index[j] >= 0) rhs[2 * std::size_t(free_index[j]) + c] -= r;
-      }
+        add_edge_difference(rhs, free_index, i, j, c, signs[e][c] * (z[e][c] - w[e][c]), uv);
     }
     cholesky.solve(rhs);
     for(std::size_t i = 0; i < n; ++i)
@@ -208,6 +227,12 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   }
   if(!feasible.empty()) // else no iteration ran and `uv` is the feasible guess
     uv = feasible;
+  if(state)
+  {
+    state->z.swap(z);
+    state->w.swap(w);
+    state->signs = signs;
+  }
   result.iteration_seconds = seconds_since(start);
   return result;
 }
