@@ -54,6 +54,9 @@ const char* const usage =
   "  --tiles MxN                   repeat the texture M times along u, N along v (default 1x1)\n"
   "  --fixed-pair A,B              fix the edge between input vertices A and B (0-based);\n"
   "                                default: an automatic pair in every component\n"
+  "  --refine-signs                re-solve with the signs of the solution (at most 10 rounds)\n"
+  "  --refine-euclidean            then minimize the Euclidean edge-length error from the\n"
+  "                                solution (stress majorization, at most 1000 steps)\n"
   "  --repair                      split non-manifold vertices first (common in STL files)\n"
   "  --help                        print this and exit\n"
   "\n"
@@ -69,6 +72,8 @@ struct Settings
   int tiles_u = 1, tiles_v = 1;
   std::optional<std::pair<std::size_t, std::size_t> > fixed_pair;
   bool repair = false;
+  bool refine_signs = false;
+  bool refine_euclidean = false;
 };
 
 // Parses the command line; returns an error message, or nothing on success.
@@ -86,6 +91,10 @@ std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
       help = true;
     else if(arg == "--repair")
       s.repair = true;
+    else if(arg == "--refine-signs")
+      s.refine_signs = true;
+    else if(arg == "--refine-euclidean")
+      s.refine_euclidean = true;
     else if(arg == "--guess")
     {
       const auto v = value();
@@ -151,6 +160,8 @@ SMP::Error_code texture(const Mesh& mesh, UV_map uv, const Settings& s, SMP::Tex
   options.texture_fit = s.fit;
   options.tiles_u = s.tiles_u;
   options.tiles_v = s.tiles_v;
+  options.sign_refinement_rounds = s.refine_signs ? 10 : 0;
+  options.euclidean_refinement_iterations = s.refine_euclidean ? 1000 : 0;
   if(s.fixed_pair)
     options.fixed_pair = std::make_pair(Vertex(Mesh::size_type(s.fixed_pair->first)),
                                         Vertex(Mesh::size_type(s.fixed_pair->second)));
@@ -263,7 +274,8 @@ int main(int argc, char** argv)
           << 100 * d.flipped_area_fraction << "% of the area)\n";
   std::ostringstream details;
   details << summary.str()
-          << "initial guess: " << s.guess << ", tiles: " << s.tiles_u << "x" << s.tiles_v << '\n'
+          << "initial guess: " << s.guess << (s.refine_signs ? ", sign refinement" : "")
+          << (s.refine_euclidean ? ", Euclidean refinement" : "") << ", tiles: " << s.tiles_u << "x" << s.tiles_v << '\n'
           << "scale of the best fit to 3D lengths: " << d.scale << '\n'
           << "mean / max angle distortion (degrees): " << d.mean_angle_distortion << " / " << d.max_angle_distortion << '\n'
           << "area distortion (RMS log ratio): " << d.area_distortion << '\n'
