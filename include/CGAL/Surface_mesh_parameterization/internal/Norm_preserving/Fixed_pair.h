@@ -22,6 +22,11 @@ inline double l1_distance(const std::array<double, 3>& p, const std::array<doubl
   return std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]);
 }
 
+inline double l2_distance(const std::array<double, 3>& p, const std::array<double, 3>& q)
+{
+  return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+}
+
 inline bool is_edge(const Norm_preserving_geometry& geometry, std::size_t a, std::size_t b)
 {
   const std::array<std::size_t, 2> e = {(std::min)(a, b), (std::max)(a, b)};

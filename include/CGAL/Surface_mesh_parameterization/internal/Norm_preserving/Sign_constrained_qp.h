@@ -40,13 +40,20 @@ inline Edge_signs edge_signs(const Norm_preserving_geometry& geometry, const UV_
   return signs;
 }
 
-inline std::vector<double> edge_l1_lengths(const Norm_preserving_geometry& geometry)
+// The length of every edge, in edge order, under `distance` (l1_distance, l2_distance).
+template <typename Distance>
+std::vector<double> edge_lengths(const Norm_preserving_geometry& geometry, Distance distance)
 {
   std::vector<double> lengths;
   lengths.reserve(geometry.edges.size());
   for(const auto& e : geometry.edges)
-    lengths.push_back(l1_distance(geometry.points[e[0]], geometry.points[e[1]]));
+    lengths.push_back(distance(geometry.points[e[0]], geometry.points[e[1]]));
   return lengths;
+}
+
+inline std::vector<double> edge_l1_lengths(const Norm_preserving_geometry& geometry)
+{
+  return edge_lengths(geometry, l1_distance);
 }
 
 // Eq. 4: sum over edges of (l1_e - su du - sv dv)^2.

@@ -42,18 +42,9 @@ struct Stress_majorization_result
   std::vector<double> stress; // at the start, then after each step: non-increasing
 };
 
-inline double l2_distance(const std::array<double, 3>& p, const std::array<double, 3>& q)
-{
-  return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-}
-
 inline std::vector<double> edge_euclidean_lengths(const Norm_preserving_geometry& geometry)
 {
-  std::vector<double> lengths;
-  lengths.reserve(geometry.edges.size());
-  for(const auto& e : geometry.edges)
-    lengths.push_back(l2_distance(geometry.points[e[0]], geometry.points[e[1]]));
-  return lengths;
+  return edge_lengths(geometry, l2_distance);
 }
 
 // Not std::hypot, which is several times slower: the uvs are in units of the mean edge
