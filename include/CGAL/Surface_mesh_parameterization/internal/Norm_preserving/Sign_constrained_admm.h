@@ -132,22 +132,19 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   auto edge_value = [&](std::size_t e, int c) {
     return signs[e][c] * (uv[geometry.edges[e][0]][c] - uv[geometry.edges[e][1]][c]);
   };
-  if(state && state->z.size() == m && state->w.size() == m && state->signs.size() == m)
+  const bool warm = state && state->z.size() == m && state->w.size() == m && state->signs.size() == m;
+  if(warm)
   {
     z.swap(state->z);
     w.swap(state->w);
-    for(std::size_t e = 0; e < m; ++e) // a turned sign starts over from the point
-      for(int c = 0; c < 2; ++c)
-        if(state->signs[e][c] != signs[e][c])
-        {
-          z[e][c] = (std::max)(0., edge_value(e, c));
-          w[e][c] = 0.;
-        }
   }
-  else
-    for(std::size_t e = 0; e < m; ++e)
-      for(int c = 0; c < 2; ++c)
+  for(std::size_t e = 0; e < m; ++e) // cold, or a turned sign: start over from the point
+    for(int c = 0; c < 2; ++c)
+      if(!warm || state->signs[e][c] != signs[e][c])
+      {
         z[e][c] = (std::max)(0., edge_value(e, c));
+        w[e][c] = 0.;
+      }
   double l1_norm = 0;
   for(double l : lengths) l1_norm += l * l;
   l1_norm = (std::max)(std::sqrt(l1_norm), std::numeric_limits<double>::min());
