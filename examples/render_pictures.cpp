@@ -24,6 +24,7 @@
 #include <CGAL/Surface_mesh_parameterization/cut_to_disk.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Texture_space_fit.h>
 
 #include "uv_layout_svg.h"
 
@@ -128,21 +129,15 @@ Textured_faces texture_on_disk(Mesh& mesh, Parameterizer parameterizer, const st
     t.uv_indices.push_back(uv_corner);
   }
 
-  // Uniform fit into [0,1]^2, as ours does by default.
-  double low[2] = {1e300, 1e300}, high[2] = {-1e300, -1e300};
+  // Uniform fit into [0,1]^2, the package's own, as ours does by default.
+  std::vector<std::array<double, 2> > fitted;
   for(seam_vertex v : order)
-    for(int c = 0; c < 2; ++c)
-    {
-      low[c] = std::min(low[c], get(uv, v)[c]);
-      high[c] = std::max(high[c], get(uv, v)[c]);
-    }
-  const double extent = std::max(high[0] - low[0], high[1] - low[1]);
-  const double scale = extent > 0 ? 1 / extent : 1;
-  for(seam_vertex v : order)
+    fitted.push_back({get(uv, v).x(), get(uv, v).y()});
+  SMP::internal::Norm_preserving::fit_to_texture_space(fitted, SMP::UNIFORM_FIT, 1, 1);
+  for(std::size_t k = 0; k < order.size(); ++k)
   {
-    const Point_2 p = get(uv, v);
-    put(uv, v, Point_2((p.x() - low[0]) * scale, (p.y() - low[1]) * scale));
-    t.uvs.push_back(get(uv, v));
+    put(uv, order[k], Point_2(fitted[k][0], fitted[k][1]));
+    t.uvs.push_back(get(uv, order[k]));
   }
   if(!np_examples::write_uv_layout_svg(svg, seam_mesh, uv))
     throw std::runtime_error("cannot write " + svg);
