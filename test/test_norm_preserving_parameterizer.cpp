@@ -6,11 +6,17 @@
 #include <CGAL/Surface_mesh_parameterization/Interior_point_quadratic_program_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_feasible_projection.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Two_column_cholesky.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
 #include <gtest/gtest.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -160,6 +166,72 @@ TEST(NormPreservingADMMSolver, ReportsTheIterationLimitWithAFeasiblePoint)
   EXPECT_NE(run.report.message.find("iteration limit"), std::string::npos);
   EXPECT_EQ(run.report.max_constraint_violation, 0.);
   EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective);
+}
+
+// The free-vertex Laplacian of a mesh with its first edge's ends fixed, as the ADMM builds it.
+SMP::internal::Norm_preserving::Sparse_matrix free_laplacian(const Mesh& mesh)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  SMP::Norm_preserving_geometry geometry;
+  geometry.points.resize(num_vertices(mesh));
+  for(auto e : edges(mesh))
+    geometry.edges.push_back({std::size_t(source(e, mesh)), std::size_t(target(e, mesh))});
+  const std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{geometry.edges[0][0], {0., 0.}},
+                                                 NP::Fixed_vertex{geometry.edges[0][1], {1., 0.}}};
+  return NP::free_vertex_laplacian(geometry, NP::free_vertex_indices(geometry.points.size(), fixed));
+}
+
+// The two-column solve, split into parts solved on several threads, matches Eigen's own
+// LDL' solve of the same Laplacian; a small factor is not split.
+TEST(TwoColumnCholesky, SolvesLikeEigenAndSplitsLargeFactors)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  for(const std::string name : {"cow", "bunny00"})
+  {
+    const NP::Sparse_matrix lower = free_laplacian(np_test::load_mesh(name));
+    const std::size_t n = std::size_t(lower.rows());
+    NP::Two_column_cholesky cholesky;
+    ASSERT_TRUE(cholesky.compute(lower)) << name;
+    if(name == "cow")
+      EXPECT_EQ(cholesky.sequential_columns(), n);
+    else
+      EXPECT_LT(cholesky.sequential_columns(), n / 20) << "the factor of bunny00 is split into parts";
+    Eigen::SimplicialLDLT<NP::Sparse_matrix, Eigen::Lower> ldlt(lower);
+    ASSERT_EQ(ldlt.info(), Eigen::Success);
+    Eigen::MatrixXd b(n, 2);
+    std::vector<double> interleaved(2 * n);
+    for(std::size_t i = 0; i < n; ++i)
+      for(int c = 0; c < 2; ++c)
+        interleaved[2 * i + std::size_t(c)] = b(Eigen::Index(i), c) = std::sin(0.37 * double(2 * i + std::size_t(c)));
+    cholesky.solve(interleaved);
+    const Eigen::MatrixXd x = ldlt.solve(b);
+    double difference = 0;
+    for(std::size_t i = 0; i < n; ++i)
+      for(int c = 0; c < 2; ++c)
+        difference = std::max(difference, std::abs(interleaved[2 * i + std::size_t(c)] - x(Eigen::Index(i), c)));
+    EXPECT_LT(difference, 1e-9 * x.cwiseAbs().maxCoeff()) << name;
+  }
+}
+
+// One thread or several: the same uvs, bit for bit (the solve of bunny00 is split into parts).
+TEST(NormPreservingADMMSolver, GivesTheSameBitsOnOneThreadAsOnSeveral)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  Mapped_mesh several(np_test::load_mesh("bunny00")), one(np_test::load_mesh("bunny00"));
+  Parameterizer parameterizer;
+  several.parameterize(parameterizer, *halfedges(several.mesh).begin());
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one.parameterize(parameterizer, *halfedges(one.mesh).begin());
+  }
+  ASSERT_EQ(several.status, SMP::OK) << several.report.message;
+  ASSERT_EQ(one.status, SMP::OK) << one.report.message;
+  EXPECT_EQ(several.report.solver_iterations, one.report.solver_iterations);
+  for(Vertex v : vertices(several.mesh))
+    ASSERT_EQ(get(several.uv, v), get(one.uv, v));
+#else
+  GTEST_SKIP() << "built without TBB: one thread only";
+#endif
 }
 
 // The sweep onto the feasible set: any point becomes feasible with the fixed pair in place, and

@@ -2,10 +2,14 @@
 // eliminated, Dirichlet), and the right-hand side of a least-squares fit of the mesh to wished
 // edge differences with it: the one system of the ADMM solver's mesh step and of the stress
 // majorization's step. Both hold the same fixed pair, so one factorization serves both.
+// The ADMM solver assembles its right-hand side by gathering per-edge values at each free
+// vertex (Free_vertex_edges), in edge order, on several threads: the same sums as adding
+// edge by edge, bit for bit.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FREE_VERTEX_LAPLACIAN_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FREE_VERTEX_LAPLACIAN_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
@@ -48,16 +52,75 @@ inline Sparse_matrix free_vertex_laplacian(const Norm_preserving_geometry& geome
   return laplacian;
 }
 
-// Adds to `rhs` (free vertices, u and v interleaved) edge (i, j)'s wished difference
-// `difference` of w_i - w_j in coordinate c, for the least-squares system whose matrix is the
-// Laplacian above: the values of fixed vertices, taken from `uv`, go to the right-hand side.
-inline void add_edge_difference(std::vector<double>& rhs, const std::vector<int>& free_index, std::size_t i,
-                                std::size_t j, int c, double difference, const UV_vector& uv)
+// Edge (i, j)'s wished difference `difference` of w_i - w_j in coordinate c, for the
+// least-squares system whose matrix is the Laplacian above, with the values of its fixed
+// ends (taken from `uv`) moved to the right-hand side.
+inline double free_edge_difference(const std::vector<int>& free_index, std::size_t i, std::size_t j, int c,
+                                   double difference, const UV_vector& uv)
 {
   if(free_index[i] < 0) difference -= uv[i][c];
   if(free_index[j] < 0) difference += uv[j][c];
+  return difference;
+}
+
+// Adds edge (i, j)'s wished difference to `rhs` (free vertices, u and v interleaved).
+inline void add_edge_difference(std::vector<double>& rhs, const std::vector<int>& free_index, std::size_t i,
+                                std::size_t j, int c, double difference, const UV_vector& uv)
+{
+  difference = free_edge_difference(free_index, i, j, c, difference, uv);
   if(free_index[i] >= 0) rhs[2 * std::size_t(free_index[i]) + c] += difference;
   if(free_index[j] >= 0) rhs[2 * std::size_t(free_index[j]) + c] -= difference;
+}
+
+// The edges at each free vertex in edge order: edge e as e + 1 where the vertex is its first
+// end, as -(e + 1) where it is its second; those of free vertex f from first[f] to first[f + 1].
+struct Free_vertex_edges
+{
+  std::vector<std::size_t> first;
+  std::vector<long> edges;
+};
+
+inline Free_vertex_edges free_vertex_edges(const Norm_preserving_geometry& geometry, const std::vector<int>& free_index)
+{
+  const std::size_t free_count = std::size_t(std::count_if(free_index.begin(), free_index.end(), [](int i) { return i >= 0; }));
+  Free_vertex_edges result;
+  result.first.assign(free_count + 1, 0);
+  for(const auto& e : geometry.edges)
+    for(std::size_t end : e)
+      if(free_index[end] >= 0)
+        ++result.first[std::size_t(free_index[end]) + 1];
+  for(std::size_t f = 0; f < free_count; ++f)
+    result.first[f + 1] += result.first[f];
+  result.edges.resize(result.first[free_count]);
+  std::vector<std::size_t> fill(result.first.begin(), result.first.end() - 1);
+  for(std::size_t e = 0; e < geometry.edges.size(); ++e)
+    for(int end = 0; end < 2; ++end)
+    {
+      const int f = free_index[geometry.edges[e][std::size_t(end)]];
+      if(f >= 0)
+        result.edges[fill[std::size_t(f)]++] = end == 0 ? long(e) + 1 : -(long(e) + 1);
+    }
+  return result;
+}
+
+// rhs = D' values over the free vertices (u and v interleaved): at each free vertex, the
+// values of its edges, added where it is the first end, subtracted where the second.
+inline void gather_edge_values(const Free_vertex_edges& incidence, const std::vector<std::array<double, 2> >& values,
+                               std::vector<double>& rhs)
+{
+  parallel_for_each_block(incidence.first.size() - 1, 4096, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t f = begin; f < end; ++f)
+      for(int c = 0; c < 2; ++c)
+      {
+        double sum = 0;
+        for(std::size_t k = incidence.first[f]; k < incidence.first[f + 1]; ++k)
+        {
+          const long e = incidence.edges[k];
+          sum = e > 0 ? sum + values[std::size_t(e - 1)][c] : sum - values[std::size_t(-e - 1)][c];
+        }
+        rhs[2 * f + std::size_t(c)] = sum;
+      }
+  });
 }
 
 } // namespace Norm_preserving

@@ -27,6 +27,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_feasible_projection.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Two_column_cholesky.h>
@@ -150,58 +151,61 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   l1_norm = (std::max)(std::sqrt(l1_norm), std::numeric_limits<double>::min());
 
   std::vector<double> rhs(2 * std::size_t(free_count)); // u and v interleaved
-  std::vector<std::array<double, 2> > dual_change(n);
+  const Free_vertex_edges incidence = free_vertex_edges(geometry, free_index);
+  std::vector<std::array<double, 2> > edge_values(m); // wished differences, then changes of z
+  const std::size_t block = 8192;
+  std::vector<double> block_primal((m + block - 1) / block);
   UV_vector feasible;          // the last iterate swept onto the feasible set
   std::vector<double> history; // its objective at every check
   result.outcome = Admm_outcome::ITERATION_LIMIT;
   for(int k = 1; k <= settings.max_iterations; ++k)
   {
     // Mesh step: min |D u - Su (a - wa)|^2 and the same for v, fixed vertices held.
-    std::fill(rhs.begin(), rhs.end(), 0.);
-    for(std::size_t e = 0; e < m; ++e)
-    {
-      const std::size_t i = geometry.edges[e][0], j = geometry.edges[e][1];
-      for(int c = 0; c < 2; ++c)
-        add_edge_difference(rhs, free_index, i, j, c, signs[e][c] * (z[e][c] - w[e][c]), uv);
-    }
+    parallel_for_each_block(m, block, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t e = begin; e < end; ++e)
+        for(int c = 0; c < 2; ++c)
+          edge_values[e][c] = free_edge_difference(free_index, geometry.edges[e][0], geometry.edges[e][1], c,
+                                                   signs[e][c] * (z[e][c] - w[e][c]), uv);
+    });
+    gather_edge_values(incidence, edge_values, rhs);
     cholesky.solve(rhs);
     for(std::size_t i = 0; i < n; ++i)
       if(free_index[i] >= 0)
         uv[i] = {rhs[2 * std::size_t(free_index[i])], rhs[2 * std::size_t(free_index[i]) + 1]};
 
-    // Edge step (over-relaxed) and multiplier step.
+    // Edge step (over-relaxed) and multiplier step; at a check, the changes of z kept.
     const bool check = k % check_every == 0 || k == settings.max_iterations;
-    double primal = 0;
-    if(check)
-      std::fill(dual_change.begin(), dual_change.end(), std::array<double, 2>{0., 0.});
-    for(std::size_t e = 0; e < m; ++e)
-    {
-      std::array<double, 2> ax, h;
-      for(int c = 0; c < 2; ++c)
+    parallel_for_each_block(m, block, [&](std::size_t begin, std::size_t end) {
+      double primal = 0;
+      for(std::size_t e = begin; e < end; ++e)
       {
-        ax[c] = edge_value(e, c);
-        h[c] = relaxation * ax[c] + (1. - relaxation) * z[e][c];
-      }
-      const std::array<double, 2> next = edge_step(lengths[e], h[0] + w[e][0], h[1] + w[e][1], rho);
-      for(int c = 0; c < 2; ++c)
-      {
-        w[e][c] += h[c] - next[c];
-        if(check)
+        std::array<double, 2> ax, h;
+        for(int c = 0; c < 2; ++c)
         {
-          primal += (ax[c] - next[c]) * (ax[c] - next[c]);
-          const double change = signs[e][c] * (next[c] - z[e][c]);
-          dual_change[geometry.edges[e][0]][c] += change;
-          dual_change[geometry.edges[e][1]][c] -= change;
+          ax[c] = edge_value(e, c);
+          h[c] = relaxation * ax[c] + (1. - relaxation) * z[e][c];
         }
-        z[e][c] = next[c];
+        const std::array<double, 2> next = edge_step(lengths[e], h[0] + w[e][0], h[1] + w[e][1], rho);
+        for(int c = 0; c < 2; ++c)
+        {
+          w[e][c] += h[c] - next[c];
+          if(check)
+          {
+            primal += (ax[c] - next[c]) * (ax[c] - next[c]);
+            edge_values[e][c] = signs[e][c] * (next[c] - z[e][c]);
+          }
+          z[e][c] = next[c];
+        }
       }
-    }
+      block_primal[begin / block] = primal;
+    });
     if(!check)
       continue;
+    double primal = 0;
+    for(double p : block_primal) primal += p;
+    gather_edge_values(incidence, edge_values, rhs); // D' times the change of z
     double dual = 0;
-    for(std::size_t i = 0; i < n; ++i)
-      if(free_index[i] >= 0)
-        dual += dual_change[i][0] * dual_change[i][0] + dual_change[i][1] * dual_change[i][1];
+    for(double d : rhs) dual += d * d;
     result.iterations = k;
     result.primal_residual = std::sqrt(primal) / l1_norm;
     result.dual_residual = std::sqrt(dual) / l1_norm;

@@ -6,13 +6,24 @@
 // columns). The factorization itself is CHOLMOD's supernodal one when the package is
 // configured with CHOLMOD (4x faster than Eigen's simplicial one at 150k vertices), converted
 // to simplicial form; Eigen's SimplicialLLT otherwise.
+//
+// The triangular solves run on several threads (Parallel_for.h): the elimination tree is cut
+// into `part_count` sets of whole subtrees of about equal work and a "top" holding the
+// ancestors of the cuts. A column of a part only touches rows of its own part and of the top,
+// so the parts are solved independently; their updates of top rows go to per-part slots,
+// added to the top rows in part order. The split depends on the factor only, not on the
+// number of threads, so the result is the same bit for bit on any number of threads.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TWO_COLUMN_CHOLESKY_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TWO_COLUMN_CHOLESKY_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -31,6 +42,8 @@ public:
     cholmod_common common;
     cholmod_start(&common);
     common.supernodal = CHOLMOD_SUPERNODAL;
+    common.nmethods = 1;
+    common.method[0].ordering = CHOLMOD_METIS;
     cholmod_sparse view = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
     cholmod_factor* factor = cholmod_analyze(&view, &common);
     bool ok = factor != nullptr && cholmod_factorize(&view, factor, &common) && common.status == CHOLMOD_OK
@@ -46,6 +59,8 @@ public:
       m_first.assign(1, 0);
       m_rows.clear();
       m_values.clear();
+      m_rows.reserve(std::size_t(first[m_n]));
+      m_values.reserve(std::size_t(first[m_n]));
       for(std::size_t j = 0; j < m_n; ++j)
       {
         for(int k = first[j]; k < first[j + 1]; ++k)
@@ -62,6 +77,8 @@ public:
     }
     cholmod_free_factor(&factor, &common);
     cholmod_finish(&common);
+    if(ok)
+      split_into_parts();
     return ok;
 #else
     Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > llt(lower);
@@ -72,6 +89,7 @@ public:
     m_rows.assign(factor.innerIndexPtr(), factor.innerIndexPtr() + m_first[m_n]);
     m_values.assign(factor.valuePtr(), factor.valuePtr() + m_first[m_n]);
     m_position.assign(llt.permutationP().indices().data(), llt.permutationP().indices().data() + m_n);
+    split_into_parts();
     return true;
 #endif
   }
@@ -79,35 +97,36 @@ public:
   // Solves A X = B in place for the two interleaved columns of `b` (size 2n).
   void solve(std::vector<double>& b) const
   {
-    m_work.resize(2 * m_n);
+    const std::size_t top = m_top.size(), slots = m_n + part_count * top;
+    m_work.assign(2 * slots, 0.);
     std::vector<double>& y = m_work;
     for(std::size_t i = 0; i < m_n; ++i)
     {
       y[2 * std::size_t(m_position[i])] = b[2 * i];
       y[2 * std::size_t(m_position[i]) + 1] = b[2 * i + 1];
     }
-    for(std::size_t j = 0; j < m_n; ++j) // L y = P b
-    {
-      const double y0 = y[2 * j] /= m_values[m_first[j]], y1 = y[2 * j + 1] /= m_values[m_first[j]];
-      for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
-      {
-        const std::size_t i = std::size_t(m_rows[k]);
-        y[2 * i] -= m_values[k] * y0;
-        y[2 * i + 1] -= m_values[k] * y1;
-      }
-    }
-    for(std::size_t j = m_n; j-- > 0;) // L' x = y
-    {
-      double y0 = y[2 * j], y1 = y[2 * j + 1];
-      for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
-      {
-        const std::size_t i = std::size_t(m_rows[k]);
-        y0 -= m_values[k] * y[2 * i];
-        y1 -= m_values[k] * y[2 * i + 1];
-      }
-      y[2 * j] = y0 / m_values[m_first[j]];
-      y[2 * j + 1] = y1 / m_values[m_first[j]];
-    }
+    // L y = P b: the parts, their updates of the top gathered, then the top.
+    parallel_for_each_index(part_count, [&](std::size_t p) {
+      for(int k = m_part_first[p]; k < m_part_first[p + 1]; ++k)
+        forward_column(std::size_t(m_part_columns[k]), y);
+    });
+    for(std::size_t q = 0; q < top; ++q)
+      for(std::size_t p = 0; p < part_count; ++p)
+        for(int c = 0; c < 2; ++c)
+          y[2 * std::size_t(m_top[q]) + c] += y[2 * (m_n + p * top + q) + c];
+    for(int j : m_top)
+      forward_column(std::size_t(j), y);
+    // L' x = y: the top, its values copied to every part's slots, then the parts.
+    for(std::size_t q = top; q-- > 0;)
+      backward_column(std::size_t(m_top[q]), y);
+    for(std::size_t q = 0; q < top; ++q)
+      for(std::size_t p = 0; p < part_count; ++p)
+        for(int c = 0; c < 2; ++c)
+          y[2 * (m_n + p * top + q) + c] = y[2 * std::size_t(m_top[q]) + c];
+    parallel_for_each_index(part_count, [&](std::size_t p) {
+      for(int k = m_part_first[p + 1]; k-- > m_part_first[p];)
+        backward_column(std::size_t(m_part_columns[k]), y);
+    });
     for(std::size_t i = 0; i < m_n; ++i)
     {
       b[2 * i] = y[2 * std::size_t(m_position[i])];
@@ -115,11 +134,137 @@ public:
     }
   }
 
+  // The number of columns solved on one thread (the top): all of them for a small factor.
+  std::size_t sequential_columns() const { return m_top.size(); }
+
 private:
+  static constexpr std::size_t part_count = 4;
+
+  void forward_column(std::size_t j, std::vector<double>& y) const
+  {
+    const double y0 = y[2 * j] /= m_values[m_first[j]], y1 = y[2 * j + 1] /= m_values[m_first[j]];
+    for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
+    {
+      const std::size_t i = std::size_t(m_rows[k]);
+      y[2 * i] -= m_values[k] * y0;
+      y[2 * i + 1] -= m_values[k] * y1;
+    }
+  }
+
+  void backward_column(std::size_t j, std::vector<double>& y) const
+  {
+    double y0 = y[2 * j], y1 = y[2 * j + 1];
+    for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
+    {
+      const std::size_t i = std::size_t(m_rows[k]);
+      y0 -= m_values[k] * y[2 * i];
+      y1 -= m_values[k] * y[2 * i + 1];
+    }
+    y[2 * j] = y0 / m_values[m_first[j]];
+    y[2 * j + 1] = y1 / m_values[m_first[j]];
+  }
+
+  // Cuts the elimination tree (parent: first row below the diagonal) into the parts and the
+  // top: the largest subtree goes to the top (its root) and its children replace it, until
+  // the subtrees, dealt largest first to the least loaded part, load no part more than 10%
+  // over an even share, or the top would exceed 10% of the work. Small factors are all top.
+  void split_into_parts()
+  {
+    const std::size_t n = m_n;
+    std::vector<int> parent(n, -1);
+    std::vector<double> work(n);
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
+        if(parent[j] < 0 || m_rows[k] < parent[j])
+          parent[j] = m_rows[k];
+      work[j] += double(m_first[j + 1] - m_first[j]);
+      if(parent[j] >= 0)
+        work[std::size_t(parent[j])] += work[j];
+    }
+    std::vector<int> child_first(n + 1, 0), children(n);
+    for(std::size_t j = 0; j < n; ++j)
+      if(parent[j] >= 0)
+        ++child_first[std::size_t(parent[j]) + 1];
+    std::partial_sum(child_first.begin(), child_first.end(), child_first.begin());
+    std::vector<int> fill(child_first.begin(), child_first.end() - 1);
+    std::vector<int> subtrees; // roots of the subtrees not in the top
+    for(std::size_t j = 0; j < n; ++j)
+      if(parent[j] >= 0)
+        children[std::size_t(fill[std::size_t(parent[j])]++)] = int(j);
+      else
+        subtrees.push_back(int(j));
+
+    const double total = double(m_first[n]);
+    const double minimum_work = 1 << 18; // below: all top, the pass on one thread
+    std::vector<char> in_top(n, 0);
+    std::vector<int> bin(n, -1);
+    double top_work = 0;
+    bool split = total >= minimum_work;
+    while(split)
+    {
+      std::sort(subtrees.begin(), subtrees.end(), [&](int a, int b) {
+        return work[std::size_t(a)] > work[std::size_t(b)] || (work[std::size_t(a)] == work[std::size_t(b)] && a < b);
+      });
+      std::array<double, part_count> load{};
+      for(int r : subtrees)
+      {
+        const std::size_t lightest = std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
+        load[lightest] += work[std::size_t(r)];
+        bin[std::size_t(r)] = int(lightest);
+      }
+      const double heaviest = *std::max_element(load.begin(), load.end());
+      const std::size_t r = std::size_t(subtrees.front());
+      const double own = double(m_first[r + 1] - m_first[r]);
+      if(heaviest <= 1.1 * (total - top_work) / double(part_count) || top_work + own > 0.1 * total)
+        break;
+      in_top[r] = 1;
+      top_work += own;
+      bin[r] = -1;
+      subtrees.erase(subtrees.begin());
+      subtrees.insert(subtrees.end(), children.begin() + child_first[r], children.begin() + child_first[r + 1]);
+      split = !subtrees.empty();
+    }
+    if(!split || total < minimum_work)
+      std::fill(in_top.begin(), in_top.end(), char(1));
+
+    // Every column joins its subtree's part (parents come later in the order), rows in the
+    // top of a part's columns are renumbered to the part's slots.
+    std::vector<int> top_index(n, -1);
+    m_top.clear();
+    for(std::size_t j = 0; j < n; ++j)
+      if(in_top[j])
+      {
+        top_index[j] = int(m_top.size());
+        m_top.push_back(int(j));
+      }
+    for(std::size_t j = n; j-- > 0;)
+      if(!in_top[j] && bin[j] < 0)
+        bin[j] = bin[std::size_t(parent[j])];
+    m_part_first.assign(part_count + 1, 0);
+    for(std::size_t j = 0; j < n; ++j)
+      if(!in_top[j])
+        ++m_part_first[std::size_t(bin[j]) + 1];
+    std::partial_sum(m_part_first.begin(), m_part_first.end(), m_part_first.begin());
+    m_part_columns.resize(std::size_t(m_part_first[part_count]));
+    fill.assign(m_part_first.begin(), m_part_first.end() - 1);
+    const std::size_t top = m_top.size();
+    for(std::size_t j = 0; j < n; ++j)
+      if(!in_top[j])
+      {
+        m_part_columns[std::size_t(fill[std::size_t(bin[j])]++)] = int(j);
+        for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
+          if(in_top[std::size_t(m_rows[k])])
+            m_rows[k] = int(n + std::size_t(bin[j]) * top + std::size_t(top_index[std::size_t(m_rows[k])]));
+      }
+  }
+
   std::size_t m_n = 0;
   std::vector<int> m_first, m_rows; // the simplicial factor by columns, diagonal first
   std::vector<double> m_values;
   std::vector<int> m_position;      // position of each unknown in the factor's order
+  std::vector<int> m_top;           // columns of the top, ascending
+  std::vector<int> m_part_first, m_part_columns; // columns of each part, ascending
   mutable std::vector<double> m_work;
 };
 

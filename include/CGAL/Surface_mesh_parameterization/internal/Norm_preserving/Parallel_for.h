@@ -1,0 +1,48 @@
+// Runs independent pieces of work on several threads when the package is built with TBB
+// (CGAL_LINKED_WITH_TBB), one after the other otherwise. The callers split their work into
+// a number of pieces that does not depend on the number of threads and combine the pieces'
+// results in a fixed order, so a run on one thread gives the same bits as a run on many.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PARALLEL_FOR_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PARALLEL_FOR_H
+
+#include <algorithm>
+#include <cstddef>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace Norm_preserving {
+
+// Calls f(0), ..., f(count - 1), in any order and possibly at once.
+template <typename Function>
+void parallel_for_each_index(std::size_t count, const Function& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(std::size_t(0), count, f);
+#else
+  for(std::size_t i = 0; i < count; ++i)
+    f(i);
+#endif
+}
+
+// Calls f(begin, end) on consecutive blocks of [0, size) of `block` indices (the last one
+// shorter), in any order and possibly at once.
+template <typename Function>
+void parallel_for_each_block(std::size_t size, std::size_t block, const Function& f)
+{
+  parallel_for_each_index((size + block - 1) / block, [&](std::size_t b) {
+    f(b * block, (std::min)(size, (b + 1) * block));
+  });
+}
+
+} // namespace Norm_preserving
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
