@@ -16,6 +16,7 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
@@ -194,8 +195,10 @@ TEST(TwoColumnCholesky, SolvesLikeEigenAndSplitsLargeFactors)
     ASSERT_TRUE(cholesky.compute(lower)) << name;
     if(name == "cow")
       EXPECT_EQ(cholesky.sequential_columns(), n);
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD // the METIS ordering's tree; Eigen's AMD one may split worse
     else
       EXPECT_LT(cholesky.sequential_columns(), n / 20) << "the factor of bunny00 is split into parts";
+#endif
     Eigen::SimplicialLDLT<NP::Sparse_matrix, Eigen::Lower> ldlt(lower);
     ASSERT_EQ(ldlt.info(), Eigen::Success);
     Eigen::MatrixXd b(n, 2);
@@ -219,7 +222,12 @@ TEST(NormPreservingADMMSolver, GivesTheSameBitsOnOneThreadAsOnSeveral)
 #ifdef CGAL_LINKED_WITH_TBB
   Mapped_mesh several(np_test::load_mesh("bunny00")), one(np_test::load_mesh("bunny00"));
   Parameterizer parameterizer;
-  several.parameterize(parameterizer, *halfedges(several.mesh).begin());
+  {
+    // Four threads even on a machine with fewer cores.
+    tbb::global_control four(tbb::global_control::max_allowed_parallelism, 4);
+    tbb::task_arena arena(4);
+    arena.execute([&] { several.parameterize(parameterizer, *halfedges(several.mesh).begin()); });
+  }
   {
     tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
     one.parameterize(parameterizer, *halfedges(one.mesh).begin());

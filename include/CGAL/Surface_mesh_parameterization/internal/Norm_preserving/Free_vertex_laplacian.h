@@ -77,7 +77,7 @@ inline void add_edge_difference(std::vector<double>& rhs, const std::vector<int>
 struct Free_vertex_edges
 {
   std::vector<std::size_t> first;
-  std::vector<long> edges;
+  std::vector<std::ptrdiff_t> edges;
 };
 
 inline Free_vertex_edges free_vertex_edges(const Norm_preserving_geometry& geometry, const std::vector<int>& free_index)
@@ -98,7 +98,7 @@ inline Free_vertex_edges free_vertex_edges(const Norm_preserving_geometry& geome
     {
       const int f = free_index[geometry.edges[e][std::size_t(end)]];
       if(f >= 0)
-        result.edges[fill[std::size_t(f)]++] = end == 0 ? long(e) + 1 : -(long(e) + 1);
+        result.edges[fill[std::size_t(f)]++] = end == 0 ? std::ptrdiff_t(e) + 1 : -(std::ptrdiff_t(e) + 1);
     }
   return result;
 }
@@ -115,7 +115,7 @@ inline void gather_edge_values(const Free_vertex_edges& incidence, const std::ve
         double sum = 0;
         for(std::size_t k = incidence.first[f]; k < incidence.first[f + 1]; ++k)
         {
-          const long e = incidence.edges[k];
+          const std::ptrdiff_t e = incidence.edges[k];
           sum = e > 0 ? sum + values[std::size_t(e - 1)][c] : sum - values[std::size_t(-e - 1)][c];
         }
         rhs[2 * f + std::size_t(c)] = sum;

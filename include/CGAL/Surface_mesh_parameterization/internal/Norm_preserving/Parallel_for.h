@@ -2,6 +2,8 @@
 // (CGAL_LINKED_WITH_TBB), one after the other otherwise. The callers split their work into
 // a number of pieces that does not depend on the number of threads and combine the pieces'
 // results in a fixed order, so a run on one thread gives the same bits as a run on many.
+// (CGAL::for_each calls its functor through a std::function per element; the loops here are
+// over blocks and parts, with a plain call.)
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PARALLEL_FOR_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PARALLEL_FOR_H

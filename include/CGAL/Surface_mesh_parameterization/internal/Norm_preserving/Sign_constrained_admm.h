@@ -18,6 +18,10 @@
 // (the residuals alone overshoot: 700 iterations where 140 suffice on mushroom subdivided
 // once). The returned point is the last feasible one, so it satisfies every constraint exactly.
 //
+// Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
+// edge loops run in blocks of edges, the right-hand side is gathered per free vertex
+// (Free_vertex_edges); the blocks do not depend on the number of threads, nor the result.
+//
 // Sign refinement re-solves with other signs on the same mesh and fixed pair: it passes an
 // Admm_state, which keeps the factored Laplacian and the last edge values and multipliers
 // (a warm start), and the order of the new signs (the vertex values they were taken from).

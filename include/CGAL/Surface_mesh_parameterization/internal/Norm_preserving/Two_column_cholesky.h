@@ -26,6 +26,7 @@
 #include <array>
 #include <cstddef>
 #include <mutex>
+#include <utility>
 #include <numeric>
 #include <vector>
 
@@ -37,77 +38,16 @@ namespace Norm_preserving {
 class Two_column_cholesky
 {
 public:
-  // Factors the matrix whose lower triangle is `lower`; false if it is not positive definite.
+  // Factors the matrix whose lower triangle is `lower`; false if it is not positive definite
+  // (then, or if it throws, the object is left as it was).
   bool compute(const Sparse_matrix& lower)
   {
-    m_n = std::size_t(lower.rows());
-#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-    cholmod_common common;
-    cholmod_start(&common);
-    common.supernodal = CHOLMOD_SUPERNODAL;
-    common.nmethods = 1;
-    common.method[0].ordering = CHOLMOD_METIS;
-    cholmod_sparse view = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
-    cholmod_factor* factor = nullptr;
-    {
-      // METIS draws from a random generator held in a global, seeded at each call: two
-      // orderings at once on two threads would interleave its draws and differ from run to run.
-      static std::mutex metis;
-      std::lock_guard<std::mutex> lock(metis);
-      factor = cholmod_analyze(&view, &common);
-    }
-    bool ok = factor != nullptr && cholmod_factorize(&view, factor, &common) && common.status == CHOLMOD_OK
-              && factor->minor == factor->n
-              && cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, factor, &common);
-    if(ok)
-    {
-      const int* first = static_cast<const int*>(factor->p);
-      const int* rows = static_cast<const int*>(factor->i);
-      const double* values = static_cast<const double*>(factor->x);
-      const int* permutation = static_cast<const int*>(factor->Perm);
-      // The supernodes' padding comes over as explicit zeros: leave them out (counted first, so
-      // that the kept entries are allocated once: 1.48 GiB peak at 590k vertices, not 1.76).
-      auto kept = [&](int j, int k) { return k == first[j] || values[k] != 0; };
-      m_first.assign(m_n + 1, 0);
-      for(std::size_t j = 0; j < m_n; ++j)
-      {
-        m_first[j + 1] = m_first[j];
-        for(int k = first[j]; k < first[j + 1]; ++k)
-          m_first[j + 1] += kept(int(j), k) ? 1 : 0;
-      }
-      m_rows.resize(std::size_t(m_first[m_n]));
-      m_values.resize(std::size_t(m_first[m_n]));
-      for(std::size_t j = 0; j < m_n; ++j)
-      {
-        std::size_t next = std::size_t(m_first[j]);
-        for(int k = first[j]; k < first[j + 1]; ++k)
-          if(kept(int(j), k))
-          {
-            m_rows[next] = rows[k];
-            m_values[next++] = values[k];
-          }
-      }
-      m_position.resize(m_n);
-      for(std::size_t k = 0; k < m_n; ++k)
-        m_position[std::size_t(permutation[k])] = int(k);
-    }
-    cholmod_free_factor(&factor, &common);
-    cholmod_finish(&common);
-    if(ok)
-      split_into_parts();
-    return ok;
-#else
-    Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > llt(lower);
-    if(llt.info() != Eigen::Success)
+    Two_column_cholesky result;
+    if(!result.factor(lower))
       return false;
-    const Sparse_matrix& factor = llt.matrixL().nestedExpression(); // diagonal first in each column
-    m_first.assign(factor.outerIndexPtr(), factor.outerIndexPtr() + m_n + 1);
-    m_rows.assign(factor.innerIndexPtr(), factor.innerIndexPtr() + m_first[m_n]);
-    m_values.assign(factor.valuePtr(), factor.valuePtr() + m_first[m_n]);
-    m_position.assign(llt.permutationP().indices().data(), llt.permutationP().indices().data() + m_n);
-    split_into_parts();
+    result.split_into_parts();
+    *this = std::move(result);
     return true;
-#endif
   }
 
   // Solves A X = B in place for the two interleaved columns of `b` (size 2n).
@@ -155,6 +95,81 @@ public:
 
 private:
   static constexpr std::size_t part_count = 4;
+
+  bool factor(const Sparse_matrix& lower)
+  {
+    m_n = std::size_t(lower.rows());
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    struct Cholmod // frees the factor and the workspace on every way out
+    {
+      cholmod_common common;
+      cholmod_factor* factor = nullptr;
+      Cholmod() { cholmod_start(&common); }
+      ~Cholmod()
+      {
+        cholmod_free_factor(&factor, &common);
+        cholmod_finish(&common);
+      }
+    } cholmod;
+    cholmod_common& common = cholmod.common;
+    common.supernodal = CHOLMOD_SUPERNODAL;
+    common.nmethods = 1;
+    common.method[0].ordering = CHOLMOD_METIS;
+    cholmod_sparse view = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
+    {
+      // METIS draws from a random generator held in a global, seeded at each call: two
+      // orderings at once on two threads would interleave its draws and differ from run to
+      // run. The lock serializes the analyses of this package only, not other METIS users.
+      static std::mutex metis;
+      std::lock_guard<std::mutex> lock(metis);
+      cholmod.factor = cholmod_analyze(&view, &common);
+    }
+    cholmod_factor* factor = cholmod.factor;
+    if(factor == nullptr || !cholmod_factorize(&view, factor, &common) || common.status != CHOLMOD_OK
+       || factor->minor != factor->n || !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, factor, &common))
+      return false;
+    const int* first = static_cast<const int*>(factor->p);
+    const int* rows = static_cast<const int*>(factor->i);
+    const double* values = static_cast<const double*>(factor->x);
+    const int* permutation = static_cast<const int*>(factor->Perm);
+    // The supernodes' padding comes over as explicit zeros: leave them out (counted first, so
+    // that the kept entries are allocated once: 1.48 GiB peak at 590k vertices, not 1.76).
+    auto kept = [&](int j, int k) { return k == first[j] || values[k] != 0; };
+    m_first.assign(m_n + 1, 0);
+    for(std::size_t j = 0; j < m_n; ++j)
+    {
+      m_first[j + 1] = m_first[j];
+      for(int k = first[j]; k < first[j + 1]; ++k)
+        m_first[j + 1] += kept(int(j), k) ? 1 : 0;
+    }
+    m_rows.resize(std::size_t(m_first[m_n]));
+    m_values.resize(std::size_t(m_first[m_n]));
+    for(std::size_t j = 0; j < m_n; ++j)
+    {
+      std::size_t next = std::size_t(m_first[j]);
+      for(int k = first[j]; k < first[j + 1]; ++k)
+        if(kept(int(j), k))
+        {
+          m_rows[next] = rows[k];
+          m_values[next++] = values[k];
+        }
+    }
+    m_position.resize(m_n);
+    for(std::size_t k = 0; k < m_n; ++k)
+      m_position[std::size_t(permutation[k])] = int(k);
+    return true;
+#else
+    Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > llt(lower);
+    if(llt.info() != Eigen::Success)
+      return false;
+    const Sparse_matrix& factor = llt.matrixL().nestedExpression(); // diagonal first in each column
+    m_first.assign(factor.outerIndexPtr(), factor.outerIndexPtr() + m_n + 1);
+    m_rows.assign(factor.innerIndexPtr(), factor.innerIndexPtr() + m_first[m_n]);
+    m_values.assign(factor.valuePtr(), factor.valuePtr() + m_first[m_n]);
+    m_position.assign(llt.permutationP().indices().data(), llt.permutationP().indices().data() + m_n);
+    return true;
+#endif
+  }
 
   void forward_column(std::size_t j, std::vector<double>& y) const
   {
@@ -213,11 +228,10 @@ private:
 
     const double total = double(m_first[n]);
     const double minimum_work = 1 << 18; // below: all top, the pass on one thread
-    std::vector<char> in_top(n, 0);
+    std::vector<char> in_top(n, char(total < minimum_work));
     std::vector<int> bin(n, -1);
     double top_work = 0;
-    bool split = total >= minimum_work;
-    while(split)
+    while(total >= minimum_work) // ends: the top's cap comes before the subtrees run out
     {
       std::sort(subtrees.begin(), subtrees.end(), [&](int a, int b) {
         return work[std::size_t(a)] > work[std::size_t(b)] || (work[std::size_t(a)] == work[std::size_t(b)] && a < b);
@@ -239,13 +253,21 @@ private:
       bin[r] = -1;
       subtrees.erase(subtrees.begin());
       subtrees.insert(subtrees.end(), children.begin() + child_first[r], children.begin() + child_first[r + 1]);
-      split = !subtrees.empty();
     }
-    if(!split || total < minimum_work)
+    for(std::size_t j = n; j-- > 0;) // parents come later in the order
+      if(!in_top[j] && bin[j] < 0)
+        bin[j] = bin[std::size_t(parent[j])];
+    // The tree was read off the factor's nonzeros: were an entry to cancel exactly, a row could
+    // lie outside its column's part and top. Then all goes to the top.
+    bool separate = true;
+    for(std::size_t j = 0; j < n && separate; ++j)
+      if(!in_top[j])
+        for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
+          separate = separate && (in_top[std::size_t(m_rows[k])] || bin[std::size_t(m_rows[k])] == bin[j]);
+    if(!separate)
       std::fill(in_top.begin(), in_top.end(), char(1));
 
-    // Every column joins its subtree's part (parents come later in the order), rows in the
-    // top of a part's columns are renumbered to the part's slots.
+    // Rows in the top of a part's columns are renumbered to the part's slots.
     std::vector<int> top_index(n, -1);
     m_top.clear();
     for(std::size_t j = 0; j < n; ++j)
@@ -254,9 +276,6 @@ private:
         top_index[j] = int(m_top.size());
         m_top.push_back(int(j));
       }
-    for(std::size_t j = n; j-- > 0;)
-      if(!in_top[j] && bin[j] < 0)
-        bin[j] = bin[std::size_t(parent[j])];
     m_part_first.assign(part_count + 1, 0);
     for(std::size_t j = 0; j < n; ++j)
       if(!in_top[j])
