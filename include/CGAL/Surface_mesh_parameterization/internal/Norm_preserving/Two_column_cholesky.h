@@ -53,9 +53,10 @@ public:
   // Solves A X = B in place for the two interleaved columns of `b` (size 2n).
   void solve(std::vector<double>& b) const
   {
-    const std::size_t top = m_top.size(), slots = m_n + part_count * top;
-    m_work.assign(2 * slots, 0.);
-    std::vector<double>& y = m_work;
+    const std::size_t top = m_top.size();
+    std::vector<double>& y = m_work; // the n unknowns, then the parts' slots for the top
+    y.resize(2 * (m_n + part_count * top));
+    std::fill(y.begin() + std::ptrdiff_t(2 * m_n), y.end(), 0.); // the unknowns are all written below
     for(std::size_t i = 0; i < m_n; ++i)
     {
       y[2 * std::size_t(m_position[i])] = b[2 * i];
