@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Mesh_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_feasible_projection.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Two_column_cholesky.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -169,14 +170,21 @@ TEST(NormPreservingADMMSolver, ReportsTheIterationLimitWithAFeasiblePoint)
   EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective);
 }
 
+// The geometry the solver receives: the package's extraction of the first halfedge's component.
+SMP::Norm_preserving_geometry component_geometry(Mesh mesh)
+{
+  SMP::internal::Norm_preserving::Mesh_component<Mesh> component;
+  std::string message;
+  EXPECT_EQ(SMP::internal::Norm_preserving::extract_component(mesh, *halfedges(mesh).begin(), component, message),
+            SMP::OK) << message;
+  return component.geometry;
+}
+
 // The free-vertex Laplacian of a mesh with its first edge's ends fixed, as the ADMM builds it.
 SMP::internal::Norm_preserving::Sparse_matrix free_laplacian(const Mesh& mesh)
 {
   namespace NP = SMP::internal::Norm_preserving;
-  SMP::Norm_preserving_geometry geometry;
-  geometry.points.resize(num_vertices(mesh));
-  for(auto e : edges(mesh))
-    geometry.edges.push_back({std::size_t(source(e, mesh)), std::size_t(target(e, mesh))});
+  const SMP::Norm_preserving_geometry geometry = component_geometry(mesh);
   const std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{geometry.edges[0][0], {0., 0.}},
                                                  NP::Fixed_vertex{geometry.edges[0][1], {1., 0.}}};
   return NP::free_vertex_laplacian(geometry, NP::free_vertex_indices(geometry.points.size(), fixed));
@@ -247,15 +255,7 @@ TEST(NormPreservingADMMSolver, GivesTheSameBitsOnOneThreadAsOnSeveral)
 TEST(SignFeasibleProjection, MakesAnyPointFeasibleAndKeepsFeasibleOnes)
 {
   namespace NP = SMP::internal::Norm_preserving;
-  const Mesh mesh = np_test::load_mesh("cow");
-  SMP::Norm_preserving_geometry geometry;
-  for(Vertex v : vertices(mesh))
-    geometry.points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
-  for(auto e : edges(mesh))
-  {
-    const std::size_t i = source(e, mesh), j = target(e, mesh);
-    geometry.edges.push_back({std::min(i, j), std::max(i, j)});
-  }
+  const SMP::Norm_preserving_geometry geometry = component_geometry(np_test::load_mesh("cow"));
   NP::UV_vector guess(geometry.points.size());
   for(std::size_t i = 0; i < guess.size(); ++i)
     guess[i] = {geometry.points[i][0] + 0.3 * geometry.points[i][2], geometry.points[i][1]};
