@@ -42,38 +42,39 @@ struct Mesh_component
   bool has(vertex_descriptor v) const { return get(contains, v) != 0; }
 };
 
-// A vertex whose faces form several fans (faces that meet at the vertex only, a "bow tie")
-// would get one uv for unrelated pieces of surface, and the fans would be extracted apart:
-// such a vertex is rejected. Circulating around it crosses the border more than once where
-// the mesh links its fans (Surface_mesh does), and misses faces where it does not: its
-// corners over the whole mesh are counted. O(size of the mesh), like the extraction.
+// The faces around each vertex, over the whole mesh, as offsets into one list: faces that
+// share only a vertex (a non-manifold vertex, a "bow tie") are neighbours too, which
+// circulating around the vertex does not find where the mesh does not link its fans.
 template <typename TriangleMesh>
-Error_code check_manifold_vertices(const TriangleMesh& mesh, const Mesh_component<TriangleMesh>& component,
-                                   std::string& message)
+struct Vertex_faces
 {
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  auto corners = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
-  for(vertex_descriptor v : vertices(mesh))
-    put(corners, v, 0);
-  for(auto f : faces(mesh))
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      put(corners, v, get(corners, v) + 1);
-  for(vertex_descriptor v : vertices(mesh))
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Vertex_number_map =
+    typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::const_type;
+
+  Vertex_number_map number;          // vertex -> 0..n-1 in the mesh's vertex order
+  std::vector<std::size_t> offset;   // faces of vertex k: incident[offset[k] .. offset[k + 1])
+  std::vector<face_descriptor> incident;
+
+  explicit Vertex_faces(const TriangleMesh& mesh)
+    : number(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh))
   {
-    if(!component.has(v))
-      continue;
-    std::size_t fan = 0, gaps = 0;
-    for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh))
-      ++(is_border(h, mesh) ? gaps : fan);
-    if(gaps > 1 || fan != get(corners, v))
-    {
-      message = "a vertex is non-manifold: its faces form several fans that share no edge;"
-                " split it first (Polygon_mesh_processing::duplicate_non_manifold_vertices)";
-      return ERROR_NON_TRIANGULAR_MESH;
-    }
+    std::size_t n = 0;
+    for(auto v : vertices(mesh))
+      put(number, v, n++);
+    offset.assign(n + 1, 0);
+    for(face_descriptor f : faces(mesh))
+      for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        ++offset[get(number, v) + 1];
+    for(std::size_t k = 0; k < n; ++k)
+      offset[k + 1] += offset[k];
+    incident.resize(offset[n]);
+    std::vector<std::size_t> next(offset.begin(), offset.end() - 1);
+    for(face_descriptor f : faces(mesh))
+      for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        incident[next[get(number, v)]++] = f;
   }
-  return OK;
-}
+};
 
 // Fills `component` with the component of the face incident to `h` (or to its opposite if
 // `h` is a border halfedge). Returns OK or an error with a message.
@@ -107,7 +108,9 @@ Error_code extract_component(TriangleMesh& mesh,
     return ERROR_WRONG_PARAMETER;
   }
 
-  // Faces of the component, breadth first; each face validated as a proper triangle.
+  // Faces of the component, breadth first through shared vertices; each face validated as a
+  // proper triangle.
+  const Vertex_faces<TriangleMesh> around(mesh);
   auto in_component = get(CGAL::dynamic_face_property_t<unsigned char>(), mesh);
   component.contains = get(CGAL::dynamic_vertex_property_t<unsigned char>(), mesh);
   for(face_descriptor f : faces(mesh))
@@ -123,15 +126,19 @@ Error_code extract_component(TriangleMesh& mesh,
     std::size_t degree = 0;
     for(halfedge_descriptor fh : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
     {
-      if(degree < 3) corners[degree] = target(fh, mesh);
+      const vertex_descriptor v = target(fh, mesh);
+      if(degree < 3) corners[degree] = v;
       ++degree;
-      put(component.contains, target(fh, mesh), 1);
-      const face_descriptor g = face(opposite(fh, mesh), mesh);
-      if(g != GT::null_face() && !get(in_component, g))
-      {
-        put(in_component, g, 1);
-        queue.push_back(g);
-      }
+      if(get(component.contains, v))
+        continue;
+      put(component.contains, v, 1);
+      const std::size_t number = get(around.number, v);
+      for(std::size_t i = around.offset[number]; i < around.offset[number + 1]; ++i)
+        if(!get(in_component, around.incident[i]))
+        {
+          put(in_component, around.incident[i], 1);
+          queue.push_back(around.incident[i]);
+        }
     }
     if(degree != 3)
     {
@@ -144,10 +151,6 @@ Error_code extract_component(TriangleMesh& mesh,
       return ERROR_NON_TRIANGULAR_MESH;
     }
   }
-
-  const Error_code manifold = check_manifold_vertices(mesh, component, message);
-  if(manifold != OK)
-    return manifold;
 
   component.index = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
   component.vertices.clear();

@@ -1,0 +1,370 @@
+// The method on one connected component given as vertices and edges, shared by the
+// parameterizer (a component of a halfedge mesh) and the whole-soup calls (a component of the
+// edge graph of a polygon soup): normalize, guess, fixed pair + similarity, solve, refine,
+// fit. Nothing here needs faces: Eq. 4 is a sum over edges (doc/decisions.md, "Input").
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PIPELINE_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PIPELINE_H
+
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_ADMM_solver.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
+#include <CGAL/Surface_mesh_parameterization/Texture_fit.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Fixed_pair.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_refinement.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Similarity_transform.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Solver_statistics.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Stress_majorization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Texture_space_fit.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace Norm_preserving {
+
+// What the caller sets: the fit, the tiling and the refinements.
+struct Pipeline_settings
+{
+  Texture_fit fit = UNIFORM_FIT;
+  std::array<int, 2> tiles = {1, 1};
+  Sign_refinement_settings sign_refinement = {0, 1e-3};
+  Stress_majorization_settings euclidean_refinement = {0, 1e-3};
+};
+
+// Measures the steps: each call returns the seconds since the previous one.
+class Lap_timer
+{
+public:
+  double lap()
+  {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - m_start).count();
+    m_start = now;
+    return seconds;
+  }
+
+private:
+  std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+};
+
+// The fixed pair by choice of the pipeline: `automatic_fixed_pair()`, or, where all edges at
+// that vertex have zero length (coincident vertices kept apart), the longest edge (lowest
+// indices on ties).
+inline std::pair<std::size_t, std::size_t> automatic_pair_of_positive_length(const Norm_preserving_geometry& geometry)
+{
+  std::pair<std::size_t, std::size_t> pair = automatic_fixed_pair(geometry);
+  if(l1_distance(geometry.points[pair.first], geometry.points[pair.second]) > 0)
+    return pair;
+  double longest = 0;
+  for(const auto& e : geometry.edges)
+  {
+    const double length = l1_distance(geometry.points[e[0]], geometry.points[e[1]]);
+    if(length > longest)
+    {
+      longest = length;
+      pair = {e[0], e[1]};
+    }
+  }
+  return pair;
+}
+
+template <typename InitialGuess, typename SolverTraits>
+class Pipeline
+{
+public:
+  Pipeline(const InitialGuess& guess, const SolverTraits& solver) : m_guess(guess), m_solver(solver) { }
+
+  const InitialGuess& initial_guess() const { return m_guess; }
+  SolverTraits& solver_traits() { return m_solver; }
+  Pipeline_settings& settings() { return m_settings; }
+
+  // Maps `geometry` (one connected component with at least one edge) to `uv`, with
+  // `pair` (component indices, an edge) fixed, or an automatic pair. Fills `report` but for
+  // `seconds`, the extraction time and the write-back time, which the caller measures.
+  Error_code run(Norm_preserving_geometry geometry, const std::optional<std::pair<std::size_t, std::size_t> >& pair,
+                 UV_vector& uv, Norm_preserving_report& report) const
+  {
+    Run run(*this, geometry, uv, report);
+    Error_code status = run.check_settings();
+    if(status == OK) status = run.choose_fixed_pair(pair);
+    if(status == OK) status = run.normalize();
+    if(status == OK) status = run.guess();
+    if(status == OK) status = run.fix_pair_and_transform();
+    if(status == OK) status = run.solve();
+    if(status == OK) status = run.refine();
+    if(status == OK) status = run.fit();
+    return status;
+  }
+
+private:
+  static constexpr bool admm = std::is_same<SolverTraits, Norm_preserving_ADMM_solver>::value;
+
+  // The state of one run, step by step.
+  struct Run
+  {
+    const Pipeline& pipeline;
+    Norm_preserving_geometry& geometry;
+    UV_vector& uv;
+    Norm_preserving_report& report;
+    Lap_timer timer;
+    std::size_t a = 0, b = 0;
+    bool automatic = false;
+    double unit = 0;
+    std::vector<double> lengths;
+    std::array<Fixed_vertex, 2> fixed;
+    Edge_signs signs;
+    Admm_state state; // shared by the QP and the refinements (default solver)
+
+    Run(const Pipeline& p, Norm_preserving_geometry& g, UV_vector& u, Norm_preserving_report& r)
+      : pipeline(p), geometry(g), uv(u), report(r)
+    { }
+
+    Error_code fail(Error_code code, const std::string& message)
+    {
+      report.message = message;
+      return code;
+    }
+
+    Error_code check_settings()
+    {
+      const Pipeline_settings& s = pipeline.m_settings;
+      if(s.sign_refinement.max_rounds < 0 || !(s.sign_refinement.tolerance >= 0)
+         || s.euclidean_refinement.max_iterations < 0 || !(s.euclidean_refinement.tolerance >= 0))
+        return fail(ERROR_WRONG_PARAMETER, "a refinement has a negative iteration limit or tolerance");
+      report.vertices = geometry.points.size();
+      report.edges = geometry.edges.size();
+      return OK;
+    }
+
+    Error_code choose_fixed_pair(const std::optional<std::pair<std::size_t, std::size_t> >& pair)
+    {
+      automatic = !pair;
+      std::tie(a, b) = pair ? *pair : automatic_pair_of_positive_length(geometry);
+      if(!is_edge(geometry, a, b))
+        return fail(ERROR_WRONG_PARAMETER, "the fixed vertices are not the two ends of an edge");
+      report.fixed_a = a;
+      report.fixed_b = b;
+      return OK;
+    }
+
+    // Units of the mean L1 edge length, relative to the first fixed vertex, so that the QP is
+    // equally well conditioned at every model scale.
+    Error_code normalize()
+    {
+      lengths = edge_l1_lengths(geometry);
+      for(double l : lengths) unit += l;
+      unit /= double(lengths.size());
+      if(!std::isfinite(unit))
+        return fail(ERROR_WRONG_PARAMETER, "the edge lengths overflow: the coordinates are too large");
+      if(!(unit > 0))
+        return fail(ERROR_WRONG_PARAMETER, "all edges have zero length");
+      const std::array<double, 3> origin = geometry.points[a];
+      for(auto& p : geometry.points)
+        for(int c = 0; c < 3; ++c)
+          p[c] = (p[c] - origin[c]) / unit;
+      lengths = edge_l1_lengths(geometry);
+      report.timings.extraction += timer.lap();
+      return OK;
+    }
+
+    Error_code guess()
+    {
+      const Error_code status = pipeline.m_guess(geometry, uv, report.message);
+      if(status != OK)
+        return status;
+      if(uv.size() != geometry.points.size())
+        return fail(ERROR_WRONG_PARAMETER, "the initial guess did not give one value per vertex");
+      for(const auto& p : uv)
+        if(!std::isfinite(p[0]) || !std::isfinite(p[1]))
+          return fail(ERROR_WRONG_PARAMETER, "the initial guess has a non-finite value");
+      if(automatic && uv[a] == uv[b])
+        report.fixed_b = b = automatic_partner(geometry, a, &uv); // the guess must tell a from b
+      return OK;
+    }
+
+    Error_code fix_pair_and_transform()
+    {
+      fixed = {Fixed_vertex{a, {}}, Fixed_vertex{b, {}}};
+      const double l1_ab = l1_distance(geometry.points[a], geometry.points[b]);
+      if(!(l1_ab > 0))
+        return fail(ERROR_WRONG_PARAMETER, "the fixed vertices are at the same position");
+      if(!fixed_pair_targets(uv[a], uv[b], l1_ab, fixed[0].target, fixed[1].target))
+        return fail(ERROR_WRONG_PARAMETER, "the initial guess puts both fixed vertices at the same point");
+      transform(uv, similarity_from_pairs(uv[a], uv[b], fixed[0].target, fixed[1].target));
+      uv[a] = fixed[0].target;
+      uv[b] = fixed[1].target;
+      signs = edge_signs(geometry, uv);
+      report.initial_objective = sign_constrained_objective(geometry, lengths, signs, uv) * unit * unit;
+      report.constraints = 2 * geometry.edges.size();
+      report.timings.guess = timer.lap();
+      return OK;
+    }
+
+    Error_code solve()
+    {
+      const Pipeline_settings& s = pipeline.m_settings;
+      const bool refined = s.sign_refinement.max_rounds > 0 || s.euclidean_refinement.max_iterations > 0;
+      Error_code status = solve_qp(signs, uv, refined ? &state : nullptr, nullptr, true);
+      if(status != OK)
+        return status;
+      timer.lap();
+      return OK;
+    }
+
+    Error_code refine()
+    {
+      const Pipeline_settings& s = pipeline.m_settings;
+      if(s.sign_refinement.max_rounds > 0)
+      {
+        auto round = [&](const Edge_signs& next, const UV_vector& order, UV_vector& candidate) {
+          return solve_qp(next, candidate, &state, &order, false) == OK;
+        };
+        const std::vector<double> objectives =
+          refine_signs(geometry, lengths, fixed, s.sign_refinement, signs, uv, round);
+        report.sign_refinement_rounds = int(objectives.size()) - 1;
+        for(double objective : objectives)
+          report.sign_refinement_objectives.push_back(objective * unit * unit);
+        report.timings.sign_refinement = timer.lap();
+      }
+
+      report.objective = l1_norm_objective(geometry, lengths, uv) * unit * unit;
+      const auto extent = sign_constraint_extent(geometry, signs, uv, 1e-8);
+      report.max_constraint_violation = (std::max)(0., -extent.first) * unit;
+      report.active_constraints = extent.second;
+      if(s.euclidean_refinement.max_iterations > 0 && geometry.points.size() > fixed.size())
+      {
+        timer.lap();
+        const Error_code status = refine_euclidean();
+        report.timings.euclidean_refinement = timer.lap();
+        return status;
+      }
+      return OK;
+    }
+
+    Error_code fit()
+    {
+      for(auto& p : uv)
+        for(int c = 0; c < 2; ++c)
+          p[c] *= unit;
+      const Pipeline_settings& s = pipeline.m_settings;
+      fit_to_texture_space(uv, s.fit, s.tiles[0], s.tiles[1]);
+      return OK;
+    }
+
+    // One QP solve with `signs`. `state`, if given, keeps the default solver's factorization
+    // for the refinements; `order` tells a warm start the values the signs come from. Only the
+    // first solve (`record`) writes the solver's figures into the report.
+    Error_code solve_qp(const Edge_signs& qp_signs, UV_vector& result, Admm_state* warm, const UV_vector* order,
+                        bool record)
+    {
+      if(result.size() == fixed.size()) // an isolated edge: its two ends are the fixed pair
+      {
+        for(const Fixed_vertex& f : fixed)
+          result[f.index] = f.target;
+        if(record)
+          report.solver_status = SOLVER_CONVERGED;
+        return OK;
+      }
+      if constexpr(admm)
+      {
+        SolverTraits solver = pipeline.m_solver;
+        const bool solved = warm ? solver.solve(geometry, lengths, qp_signs, fixed, result, *warm, order)
+                                 : solver.solve(geometry, lengths, qp_signs, fixed, result);
+        const Norm_preserving_ADMM_statistics& statistics = solver.statistics();
+        if(record)
+        {
+          report.has_solver_statistics = true;
+          report.solver_status = statistics.status;
+          report.solver_iterations = statistics.iterations;
+          report.kkt_residual = (std::max)(statistics.primal_residual, statistics.dual_residual);
+          report.message = statistics.message;
+          report.timings.assembly = statistics.assembly_seconds;
+          report.timings.factorization = statistics.factorization_seconds;
+          report.timings.iterations = statistics.iteration_seconds;
+        }
+        if(!solved)
+          return record ? fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver failed: " + statistics.message)
+                        : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+        return OK;
+      }
+      else
+      {
+        (void)warm;
+        (void)order;
+        Lap_timer clock;
+        SolverTraits qp = pipeline.m_solver;
+        assemble_sign_constrained_qp(geometry, lengths, qp_signs, fixed, qp);
+        const double assembly = clock.lap();
+        std::vector<double> x;
+        x.reserve(2 * result.size());
+        const bool solved = qp.solve(std::back_inserter(x));
+        if(record)
+        {
+          report.timings.assembly = assembly;
+          report.timings.iterations = clock.lap();
+          copy_solver_statistics(qp, report);
+        }
+        const bool finite = std::all_of(x.begin(), x.end(), [](double value) { return std::isfinite(value); });
+        if(!solved || x.size() != 2 * result.size() || !finite)
+        {
+          if(!record)
+            return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+          if(solved && x.size() == 2 * result.size())
+            return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver returned a non-finite value");
+          return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver failed" +
+                      (report.message.empty() ? std::string() : ": " + report.message));
+        }
+        for(std::size_t i = 0; i < result.size(); ++i)
+          result[i] = {x[2 * i], x[2 * i + 1]};
+        for(const Fixed_vertex& f : fixed)
+          result[f.index] = f.target;
+        if(record)
+          report.solver_status = SOLVER_CONVERGED;
+        return OK;
+      }
+    }
+
+    // Beyond the paper: the Euclidean objective by stress majorization, from the QP solution.
+    Error_code refine_euclidean()
+    {
+      const std::vector<double> euclidean = edge_euclidean_lengths(geometry);
+      std::array<Fixed_vertex, 2> held = fixed;
+      if(!euclidean_start(geometry, euclidean, held, uv))
+        return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the Euclidean refinement failed: the solution has no extent");
+      const Stress_majorization_result result =
+        majorize_stress(geometry, euclidean, held, pipeline.m_settings.euclidean_refinement, uv,
+                        state.factored ? &state.cholesky : nullptr);
+      report.euclidean_iterations = result.iterations;
+      for(double stress : result.stress)
+        report.euclidean_stress.push_back(stress * unit * unit);
+      if(!result.solved)
+        return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM,
+                    "the Euclidean refinement failed: the graph Laplacian could not be factored or a value overflowed");
+      return OK;
+    }
+  };
+
+  InitialGuess m_guess;
+  SolverTraits m_solver;
+  Pipeline_settings m_settings;
+};
+
+} // namespace Norm_preserving
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
