@@ -9,8 +9,12 @@
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 
+#include <CGAL/property_map.h>
+
+#include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace np_test {
 
@@ -70,6 +74,32 @@ struct Textured
     return true;
   }
 };
+
+using Polygons = std::vector<std::vector<std::size_t> >;
+
+// `texture_polygon_soup()` on `points` and `polygons`, into a uv vector filled with the sentinel.
+template <typename Solver = SMP::Norm_preserving_ADMM_solver>
+struct Basic_textured_soup
+{
+  using Soup_options = SMP::Texture_polygon_mesh_options<SMP::Norm_preserving_triangle_mesh,
+                                                         SMP::XY_min_max_initial_guess, Solver>;
+  std::vector<Point_3> points;
+  Polygons polygons;
+  std::vector<Point_2> uv;
+  SMP::Texture_polygon_mesh_report report;
+  SMP::Error_code status = SMP::OK;
+
+  Basic_textured_soup(std::vector<Point_3> p, Polygons f, const Soup_options& options = {})
+    : points(std::move(p)), polygons(std::move(f)), uv(points.size(), sentinel)
+  {
+    status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv), options, &report);
+  }
+  bool untouched() const
+  {
+    return std::all_of(uv.begin(), uv.end(), [](const Point_2& p) { return p == sentinel; });
+  }
+};
+using Textured_soup = Basic_textured_soup<>;
 
 inline bool is_finite(const Point_2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
 

@@ -160,16 +160,35 @@ TEST(TexturePolygonMeshErrors, EmptyMesh)
   EXPECT_FALSE(t.report.message.empty());
 }
 
+// A guess that fails on components of four vertices, as a user's guess may.
+struct No_guess_for_tetrahedra
+{
+  SMP::Error_code operator()(const SMP::Norm_preserving_geometry& geometry, std::vector<std::array<double, 2> >& uv,
+                             std::string& message) const
+  {
+    if(geometry.points.size() == 4)
+    {
+      message = "no guess for a tetrahedron";
+      return SMP::ERROR_WRONG_PARAMETER;
+    }
+    return SMP::XY_min_max_initial_guess()(geometry, uv, message);
+  }
+};
+
 TEST(TexturePolygonMeshErrors, OneBadComponentLeavesTheWholeMapUntouched)
 {
   Mesh mesh = np_test::load_mesh("cube_quad");
-  Mesh flat; // a second component with every vertex at x = 7: XY-MinMax is undefined there
-  CGAL::make_tetrahedron(Point_3(7, 0, 0), Point_3(7, 1, 0), Point_3(7, 0, 1), Point_3(7, 1, 1), flat);
-  CGAL::copy_face_graph(flat, mesh);
-  Textured t(mesh);
-  EXPECT_EQ(t.status, SMP::ERROR_WRONG_PARAMETER);
-  EXPECT_NE(t.report.message.find("same x"), std::string::npos) << t.report.message;
-  EXPECT_TRUE(t.untouched());
+  Mesh tetrahedron; // a second component, after the cube
+  CGAL::make_tetrahedron(Point_3(7, 0, 0), Point_3(7, 1, 0), Point_3(8, 0, 1), Point_3(7, 1, 1), tetrahedron);
+  CGAL::copy_face_graph(tetrahedron, mesh);
+  auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
+  SMP::Texture_polygon_mesh_report report;
+  const SMP::Error_code status =
+    SMP::texture_polygon_mesh(mesh, uv, SMP::Texture_polygon_mesh_options<Mesh, No_guess_for_tetrahedra>(), &report);
+  EXPECT_EQ(status, SMP::ERROR_WRONG_PARAMETER);
+  EXPECT_EQ(report.message, "component 1: no guess for a tetrahedron");
+  for(Vertex v : vertices(mesh))
+    EXPECT_EQ(get(uv, v), sentinel);
 }
 
 TEST(TexturePolygonMeshErrors, FixedPairOnNoFace)

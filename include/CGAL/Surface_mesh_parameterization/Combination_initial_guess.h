@@ -131,7 +131,7 @@ public:
       for(std::size_t i = 0; i < points.size(); ++i)
         for(int c = 0; c < 3; ++c)
           rotated.points[i][c] = R[c][0] * points[i][0] + R[c][1] * points[i][1] + R[c][2] * points[i][2];
-      if(XY_min_max_initial_guess()(rotated, copy_guess, copy_message) != OK)
+      if(!has_xy_extent(rotated.points) || XY_min_max_initial_guess()(rotated, copy_guess, copy_message) != OK)
         continue; // zero extent in x or y: no guess from this copy
       add_weighted(copy_guess, r.weight, sum);
       used_weight += r.weight;
@@ -152,6 +152,18 @@ public:
   }
 
 private:
+  static bool has_xy_extent(const std::vector<std::array<double, 3> >& points)
+  {
+    for(int c = 0; c < 2; ++c)
+    {
+      const auto [low, high] = std::minmax_element(points.begin(), points.end(),
+        [c](const std::array<double, 3>& p, const std::array<double, 3>& q) { return p[c] < q[c]; });
+      if(!((*high)[c] > (*low)[c]))
+        return false;
+    }
+    return true;
+  }
+
   typedef std::array<std::array<double, 3>, 3> Matrix_3;
 
   static Error_code wrong_parameter(std::string& message, const std::string& why)

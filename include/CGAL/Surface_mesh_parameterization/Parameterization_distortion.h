@@ -1,6 +1,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_DISTORTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_DISTORTION_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Named_function_parameters.h>
@@ -14,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
@@ -76,6 +79,97 @@ struct Scale_fit
 } // namespace Norm_preserving
 } // namespace internal
 
+namespace internal {
+namespace Norm_preserving {
+
+// The measures over `edges` and `triangles` (arrays of vertex handles, all with a uv), with
+// `xyz(v)` and `uv(v)` the 3D and uv positions as `Vec3`.
+template <typename Vertex, typename Xyz, typename Uv>
+Parameterization_distortion measure_distortion(const std::vector<std::array<Vertex, 2> >& edges,
+                                               const std::vector<std::array<Vertex, 3> >& triangles,
+                                               Xyz xyz, Uv uv)
+{
+  Parameterization_distortion d;
+  Scale_fit l2_fit, l1_fit;
+  for(const auto& e : edges)
+  {
+    const auto i = e[0], j = e[1];
+    const Vec3 p = minus(xyz(i), xyz(j)), t = minus(uv(i), uv(j));
+    l2_fit.add(std::sqrt(dot(p, p)), std::sqrt(dot(t, t)));
+    l1_fit.add(std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]), std::abs(t[0]) + std::abs(t[1]));
+  }
+  d.edges = l2_fit.count;
+  d.scale = l2_fit.scale();
+  d.edge_length_error = l2_fit.relative_rms();
+  d.l1_edge_length_error = l1_fit.relative_rms();
+  d.l1_objective = l1_fit.sum_of_squares();
+
+  const double s = d.scale;
+  double positive_area = 0, negative_area = 0, total_area = 0, angle_sum = 0;
+  double log_area_squares = 0, stretch_squares = 0, uv_area_sum = 0;
+  std::size_t positive = 0, negative = 0, measured = 0;
+  for(const auto& v : triangles)
+  {
+    std::array<Vec3, 3> q, t;
+    for(int k = 0; k < 3; ++k)
+    {
+      q[k] = xyz(v[k]);
+      t[k] = uv(v[k]);
+      for(int c = 0; c < 2; ++c) t[k][c] *= s;
+    }
+    const Vec3 n = cross(minus(q[1], q[0]), minus(q[2], q[0]));
+    const double area = 0.5 * std::sqrt(dot(n, n));
+    const double uv_area = 0.5 * cross(minus(t[1], t[0]), minus(t[2], t[0]))[2];
+    ++d.faces;
+    total_area += area;
+    if(uv_area > 0) { ++positive; positive_area += area; }
+    else if(uv_area < 0) { ++negative; negative_area += area; }
+    else { ++d.degenerate_uv_faces; continue; }
+
+    for(int k = 0; k < 3; ++k)
+    {
+      const int a = (k + 1) % 3, b = (k + 2) % 3;
+      const double difference = std::abs(angle_between(minus(q[a], q[k]), minus(q[b], q[k])) -
+                                         angle_between(minus(t[a], t[k]), minus(t[b], t[k])));
+      const double degrees = difference * 180. / 3.14159265358979323846;
+      angle_sum += degrees;
+      d.max_angle_distortion = (std::max)(d.max_angle_distortion, degrees);
+    }
+    if(area > 0)
+    {
+      const double log_ratio = std::log(std::abs(uv_area) / area);
+      log_area_squares += log_ratio * log_ratio;
+    }
+    // Sander et al. 2001: singular values of the Jacobian of the map uv -> 3D.
+    const double two_a = 2 * uv_area;
+    Vec3 Ss, St;
+    for(int c = 0; c < 3; ++c)
+    {
+      Ss[c] = (q[0][c] * (t[1][1] - t[2][1]) + q[1][c] * (t[2][1] - t[0][1]) + q[2][c] * (t[0][1] - t[1][1])) / two_a;
+      St[c] = (q[0][c] * (t[2][0] - t[1][0]) + q[1][c] * (t[0][0] - t[2][0]) + q[2][c] * (t[1][0] - t[0][0])) / two_a;
+    }
+    const double a = dot(Ss, Ss), b = dot(Ss, St), c = dot(St, St);
+    const double largest = std::sqrt(0.5 * ((a + c) + std::sqrt((a - c) * (a - c) + 4 * b * b)));
+    stretch_squares += 0.5 * (a + c) * std::abs(uv_area);
+    uv_area_sum += std::abs(uv_area);
+    d.linf_stretch = (std::max)(d.linf_stretch, largest);
+    ++measured;
+  }
+  if(measured > 0)
+  {
+    d.mean_angle_distortion = angle_sum / double(3 * measured);
+    d.area_distortion = std::sqrt(log_area_squares / double(measured));
+    d.l2_stretch = std::sqrt(stretch_squares / uv_area_sum);
+  }
+  const bool positive_is_reference = positive_area >= negative_area;
+  d.flipped_faces = positive_is_reference ? negative : positive;
+  d.flipped_area_fraction = total_area > 0 ? (positive_is_reference ? negative_area : positive_area) / total_area : 0.;
+  return d;
+}
+
+} // namespace Norm_preserving
+} // namespace internal
+
 /// \ingroup PkgNormPreservingParameterization
 /// measures the distortion of `uvmap` on `mesh`; `vpmap` tells which vertices have a uv.
 /// \tparam TriangleMesh a model of `FaceListGraph`
@@ -95,6 +189,7 @@ Parameterization_distortion measure_distortion(const TriangleMesh& mesh, VertexU
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const auto ppmap = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
   auto xyz = [&](auto v) -> NP::Vec3 {
     const auto& p = get(ppmap, v);
@@ -105,87 +200,73 @@ Parameterization_distortion measure_distortion(const TriangleMesh& mesh, VertexU
     return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), 0.};
   };
 
-  Parameterization_distortion d;
-  NP::Scale_fit l2_fit, l1_fit;
+  std::vector<std::array<vertex_descriptor, 2> > measured_edges;
   for(auto e : edges(mesh))
   {
     const halfedge_descriptor h = halfedge(e, mesh);
-    const auto i = source(h, mesh), j = target(h, mesh);
-    if(!get(vpmap, i) || !get(vpmap, j)) continue;
-    const NP::Vec3 p = NP::minus(xyz(i), xyz(j)), t = NP::minus(uv(i), uv(j));
-    l2_fit.add(std::sqrt(NP::dot(p, p)), std::sqrt(NP::dot(t, t)));
-    l1_fit.add(std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]), std::abs(t[0]) + std::abs(t[1]));
+    const vertex_descriptor i = source(h, mesh), j = target(h, mesh);
+    if(get(vpmap, i) && get(vpmap, j))
+      measured_edges.push_back({i, j});
   }
-  d.edges = l2_fit.count;
-  d.scale = l2_fit.scale();
-  d.edge_length_error = l2_fit.relative_rms();
-  d.l1_edge_length_error = l1_fit.relative_rms();
-  d.l1_objective = l1_fit.sum_of_squares();
-
-  const double s = d.scale;
-  double positive_area = 0, negative_area = 0, total_area = 0, angle_sum = 0;
-  double log_area_squares = 0, stretch_squares = 0, uv_area_sum = 0;
-  std::size_t positive = 0, negative = 0, measured = 0;
+  std::vector<std::array<vertex_descriptor, 3> > triangles;
   for(auto f : faces(mesh))
   {
     const halfedge_descriptor h = halfedge(f, mesh);
-    const std::array<decltype(source(h, mesh)), 3> v = {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)};
-    if(!get(vpmap, v[0]) || !get(vpmap, v[1]) || !get(vpmap, v[2])) continue;
-    std::array<NP::Vec3, 3> q, t;
-    for(int k = 0; k < 3; ++k)
-    {
-      q[k] = xyz(v[k]);
-      t[k] = uv(v[k]);
-      for(int c = 0; c < 2; ++c) t[k][c] *= s;
-    }
-    const NP::Vec3 n = NP::cross(NP::minus(q[1], q[0]), NP::minus(q[2], q[0]));
-    const double area = 0.5 * std::sqrt(NP::dot(n, n));
-    const double uv_area = 0.5 * NP::cross(NP::minus(t[1], t[0]), NP::minus(t[2], t[0]))[2];
-    ++d.faces;
-    total_area += area;
-    if(uv_area > 0) { ++positive; positive_area += area; }
-    else if(uv_area < 0) { ++negative; negative_area += area; }
-    else { ++d.degenerate_uv_faces; continue; }
+    const std::array<vertex_descriptor, 3> v = {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)};
+    if(get(vpmap, v[0]) && get(vpmap, v[1]) && get(vpmap, v[2]))
+      triangles.push_back(v);
+  }
+  return NP::measure_distortion(measured_edges, triangles, xyz, uv);
+}
 
-    for(int k = 0; k < 3; ++k)
-    {
-      const int a = (k + 1) % 3, b = (k + 2) % 3;
-      const double difference = std::abs(NP::angle_between(NP::minus(q[a], q[k]), NP::minus(q[b], q[k])) -
-                                         NP::angle_between(NP::minus(t[a], t[k]), NP::minus(t[b], t[k])));
-      const double degrees = difference * 180. / 3.14159265358979323846;
-      angle_sum += degrees;
-      d.max_angle_distortion = (std::max)(d.max_angle_distortion, degrees);
-    }
-    if(area > 0)
-    {
-      const double log_ratio = std::log(std::abs(uv_area) / area);
-      log_area_squares += log_ratio * log_ratio;
-    }
-    // Sander et al. 2001: singular values of the Jacobian of the map uv -> 3D.
-    const double two_a = 2 * uv_area;
-    NP::Vec3 Ss, St;
-    for(int c = 0; c < 3; ++c)
-    {
-      Ss[c] = (q[0][c] * (t[1][1] - t[2][1]) + q[1][c] * (t[2][1] - t[0][1]) + q[2][c] * (t[0][1] - t[1][1])) / two_a;
-      St[c] = (q[0][c] * (t[2][0] - t[1][0]) + q[1][c] * (t[0][0] - t[2][0]) + q[2][c] * (t[1][0] - t[0][0])) / two_a;
-    }
-    const double a = NP::dot(Ss, Ss), b = NP::dot(Ss, St), c = NP::dot(St, St);
-    const double largest = std::sqrt(0.5 * ((a + c) + std::sqrt((a - c) * (a - c) + 4 * b * b)));
-    stretch_squares += 0.5 * (a + c) * std::abs(uv_area);
-    uv_area_sum += std::abs(uv_area);
-    d.linf_stretch = (std::max)(d.linf_stretch, largest);
-    ++measured;
-  }
-  if(measured > 0)
+/// \ingroup PkgNormPreservingParameterization
+/// measures the distortion of the uv map of a polygon soup, such as `texture_polygon_soup()`
+/// computes: each face is triangulated as that function does, and the faces and edges whose
+/// vertices all have a uv are measured.
+/// \tparam PointRange a random-access range of 3D points (`x()`, `y()`, `z()`)
+/// \tparam PolygonRange a random-access range of ranges of integer indices
+/// \tparam VertexUVMap a model of `ReadablePropertyMap` from `std::size_t` to a 2D point type
+/// \tparam VertexParameterizedMap a model of `ReadablePropertyMap` from `std::size_t` to `bool`
+/// \param points the vertex positions
+/// \param polygons the faces, as vertex indices in order around each
+/// \param uvmap the uv of each vertex
+/// \param vpmap `true` for the vertices that have a uv
+template <typename PointRange, typename PolygonRange, typename VertexUVMap, typename VertexParameterizedMap>
+Parameterization_distortion measure_soup_distortion(const PointRange& points, const PolygonRange& polygons,
+                                                    VertexUVMap uvmap, VertexParameterizedMap vpmap)
+{
+  namespace NP = internal::Norm_preserving;
+  std::vector<std::array<std::size_t, 2> > measured_edges;
+  std::vector<std::array<std::size_t, 3> > triangles, polygon_triangles;
+  std::vector<std::vector<std::size_t> > loops;
+  for(const auto& polygon : polygons)
   {
-    d.mean_angle_distortion = angle_sum / double(3 * measured);
-    d.area_distortion = std::sqrt(log_area_squares / double(measured));
-    d.l2_stretch = std::sqrt(stretch_squares / uv_area_sum);
+    loops.clear();
+    NP::simple_loops(std::vector<std::size_t>(polygon.begin(), polygon.end()), loops);
+    for(const auto& loop : loops)
+    {
+      if(loop.size() < 3)
+        continue;
+      NP::triangulate_polygon(points, loop, polygon_triangles);
+      for(const auto& t : polygon_triangles)
+        if(get(vpmap, t[0]) && get(vpmap, t[1]) && get(vpmap, t[2]))
+        {
+          triangles.push_back(t);
+          for(int e = 0; e < 3; ++e)
+            measured_edges.push_back({(std::min)(t[e], t[(e + 1) % 3]), (std::max)(t[e], t[(e + 1) % 3])});
+        }
+    }
   }
-  const bool positive_is_reference = positive_area >= negative_area;
-  d.flipped_faces = positive_is_reference ? negative : positive;
-  d.flipped_area_fraction = total_area > 0 ? (positive_is_reference ? negative_area : positive_area) / total_area : 0.;
-  return d;
+  std::sort(measured_edges.begin(), measured_edges.end());
+  measured_edges.erase(std::unique(measured_edges.begin(), measured_edges.end()), measured_edges.end());
+  auto xyz = [&](std::size_t i) -> NP::Vec3 {
+    return {CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())};
+  };
+  auto uv = [&](std::size_t i) -> NP::Vec3 {
+    const auto& p = get(uvmap, i);
+    return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), 0.};
+  };
+  return NP::measure_distortion(measured_edges, triangles, xyz, uv);
 }
 
 } // namespace Surface_mesh_parameterization

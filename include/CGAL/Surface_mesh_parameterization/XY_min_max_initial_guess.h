@@ -16,9 +16,11 @@ namespace Surface_mesh_parameterization {
 /// The XY-MinMax initial guess of Lai & Cheng (Section 4.1): each vertex is guessed at
 /// `((x - Xmin) / (Xmax - Xmin), (y - Ymin) / (Ymax - Ymin))`.
 ///
-/// If all vertices share the same x or the same y the guess is undefined (the paper divides
-/// by zero): it then returns `ERROR_WRONG_PARAMETER` and says so, rather than invent an
-/// order; choose another initial guess for such a mesh.
+/// Where the paper divides by zero: if all vertices share the same x (or y), z takes the place
+/// of that axis, so that a component lying in a plane orthogonal to XY is guessed in its own
+/// plane; if they still share one value (a component along a coordinate axis), that
+/// coordinate of the guess is 0. Only a component of one position returns
+/// `ERROR_WRONG_PARAMETER`.
 ///
 /// \cgalModels `NormPreservingInitialGuess`
 class XY_min_max_initial_guess
@@ -35,24 +37,33 @@ public:
       message = "no vertex to guess";
       return ERROR_EMPTY_MESH;
     }
-    std::array<double, 2> low = {points[0][0], points[0][1]}, high = low;
+    std::array<double, 3> low = points[0], high = low;
     for(const auto& p : points)
-      for(int c = 0; c < 2; ++c)
+      for(int c = 0; c < 3; ++c)
       {
         low[c] = (std::min)(low[c], p[c]);
         high[c] = (std::max)(high[c], p[c]);
       }
+    // A component flat in x or y is seen in its own plane: z stands in for that axis.
+    std::array<int, 2> axis = {0, 1};
     for(int c = 0; c < 2; ++c)
-      if(!(high[c] > low[c]))
+      if(!(high[c] > low[c]) && high[2] > low[2])
       {
-        message = std::string("all vertices have the same ") + (c == 0 ? "x" : "y") +
-                  ": the XY-MinMax guess is undefined; use another initial guess";
-        return ERROR_WRONG_PARAMETER;
+        axis[c] = 2;
+        break;
       }
+    if(!(high[axis[0]] > low[axis[0]]) && !(high[axis[1]] > low[axis[1]]))
+    {
+      message = "all vertices are at the same position: the XY-MinMax guess is undefined";
+      return ERROR_WRONG_PARAMETER;
+    }
     uv.resize(points.size());
     for(std::size_t i = 0; i < points.size(); ++i)
       for(int c = 0; c < 2; ++c)
-        uv[i][c] = (points[i][c] - low[c]) / (high[c] - low[c]);
+      {
+        const int a = axis[c];
+        uv[i][c] = high[a] > low[a] ? (points[i][a] - low[a]) / (high[a] - low[a]) : 0.; // a line: v constant
+      }
     return OK;
   }
 };

@@ -3,7 +3,8 @@
 
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Component_layout.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_soup.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Pipeline.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Soup_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Texture_space_fit.h>
 
 #include <CGAL/Dynamic_property_map.h>
@@ -14,6 +15,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <optional>
@@ -25,8 +27,8 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgNormPreservingParameterization
-/// The triangle mesh that `texture_polygon_soup()` and `texture_polygon_mesh()` build each
-/// connected component of their input into, and triangulate.
+/// The mesh type whose vertex index names a soup vertex in the options of
+/// `texture_polygon_soup()` and `texture_indexed_mesh()`: vertex `i` is `Vertex_index(i)`.
 typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Norm_preserving_triangle_mesh;
 
 /// \ingroup PkgNormPreservingParameterization
@@ -55,6 +57,10 @@ struct Texture_polygon_mesh_options
   double sign_refinement_tolerance = 1e-3;     ///< `tolerance` of `set_sign_refinement()`
   int euclidean_refinement_iterations = 0;     ///< `max_iterations` of `set_euclidean_refinement()`; 0: off
   double euclidean_refinement_tolerance = 1e-3; ///< `tolerance` of `set_euclidean_refinement()`
+  /// vertices at exactly the same position (a file split along old uv seams or normals) are
+  /// one vertex for the solve and get the same uv, so the map has no seam there; `false`
+  /// keeps them apart (the pieces they split are then mapped apart)
+  bool weld_coincident_vertices = true;
   /// the fixed pair of the component that contains it (adjacent vertices); every other
   /// component, and all if empty, uses the automatic pair
   std::optional<std::pair<vertex_descriptor, vertex_descriptor> > fixed_pair;
@@ -68,6 +74,9 @@ struct Texture_polygon_mesh_report
   std::string message;                            ///< readable reason of a failure
   std::size_t components = 0;                     ///< connected components textured
   std::size_t isolated_vertices = 0;              ///< vertices on no face: given no uv
+  std::size_t welded_vertices = 0;                ///< vertices given the uv of a coincident one
+  std::size_t repeated_corners = 0;               ///< face corners dropped as repeats of a vertex
+  std::size_t point_components = 0;               ///< components of zero extent, mapped to a point
   double objective = 0;                           ///< sum of the components' Eq. 3 objectives
   std::vector<Norm_preserving_report> reports;    ///< one per component
   double seconds = 0;                             ///< wall-clock time of the call
@@ -75,25 +84,29 @@ struct Texture_polygon_mesh_report
 
 /// \ingroup PkgNormPreservingParameterization
 /// textures a polygon soup: `points[i]` is vertex `i`, each element of `polygons` lists the
-/// vertex indices of one face. Faces that share a vertex form a connected component; each
-/// component is built as a triangle mesh of its own (triangulated, adding no vertex) and
-/// parameterized with `Norm_preserving_parameterizer_3` at one common scale (mesh units, so
-/// texel density is uniform); the components are laid side by side with disjoint bounding
+/// vertex indices of one face. Any soup is accepted as it is: the method needs only the edges
+/// (paper Eq. 4), so faces need not form a manifold, be consistently oriented or orientable.
+///
+/// The edge graph is built from the faces, each triangulated on its own (adding no vertex); a
+/// face that passes through a vertex more than once is split there (a repeat in a row is
+/// dropped), and a face left with two distinct vertices adds its edge. Vertices at exactly the
+/// same position are welded into one (unless `options.weld_coincident_vertices` is `false`).
+/// Each connected component of the graph is parameterized with `Norm_preserving_parameterizer_3`'s
+/// method at one common scale (mesh units, so texel density is uniform); a component of zero
+/// extent is mapped to a point. The components are laid side by side with disjoint bounding
 /// boxes, the layout is fitted into texture space and tiled, and the uv of every vertex on a
-/// face is written into `uvmap`. Vertices on no face are left as they were. The work is
-/// linear in the size of the soup, however many components it has.
+/// face is written into `uvmap` (a welded vertex gets the uv of its weld). Vertices on no face
+/// are left as they were.
 ///
 /// On failure nothing is written, `report->message` says why, and the code is:
 /// - `ERROR_EMPTY_MESH`: no face;
-/// - `ERROR_NON_TRIANGULAR_MESH`: a face with fewer than three vertices or a repeated one, a
-///   face that makes an edge or a vertex non-manifold or is oriented against a neighbour, or
-///   a face that cannot be triangulated;
 /// - `ERROR_WRONG_PARAMETER`: a face that refers to a missing vertex, a non-finite coordinate
-///   of a vertex on a face, a fixed pair on no face, in two components or not an edge;
+///   of a vertex on a face, all vertices at one position, a fixed pair on no face, in two
+///   components, welded into one vertex or not an edge;
 /// - or the error of a component, as `Norm_preserving_parameterizer_3::parameterize()` says.
 ///
 /// \tparam PointRange a random-access range of 3D points (`x()`, `y()`, `z()`)
-/// \tparam PolygonRange a random-access range of ranges of `std::size_t`
+/// \tparam PolygonRange a random-access range of ranges of integer indices
 /// \tparam VertexUVMap a model of `WritablePropertyMap` from `std::size_t` to a 2D point type
 /// \param points the vertex positions
 /// \param polygons the faces, as vertex indices in order around each
@@ -110,6 +123,7 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
 {
   typedef typename boost::property_traits<VertexUVMap>::value_type Point_2;
   namespace NP = internal::Norm_preserving;
+  const std::size_t none = NP::Soup_graph::none;
 
   const auto start = std::chrono::steady_clock::now();
   Texture_polygon_mesh_report local_report;
@@ -126,60 +140,95 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
   if(status != OK)
     return finish(status, message);
 
-  std::vector<std::size_t> component_of_polygon, component_of_vertex;
-  r.components = NP::soup_components(points.size(), polygons, component_of_polygon, component_of_vertex);
+  const NP::Soup_graph graph = NP::build_soup_graph(points, polygons, options.weld_coincident_vertices);
+  r.components = graph.members.size();
+  r.isolated_vertices = graph.unreferenced;
+  r.welded_vertices = graph.welded;
+  r.repeated_corners = graph.repeated_corners;
+
+  // The fixed pair, as representatives, and its component.
   std::optional<std::pair<std::size_t, std::size_t> > fixed_pair;
-  std::size_t pair_component = r.components;
+  std::size_t pair_component = none;
   if(options.fixed_pair)
   {
-    fixed_pair = std::make_pair(std::size_t(options.fixed_pair->first), std::size_t(options.fixed_pair->second));
-    if(fixed_pair->first >= points.size() || fixed_pair->second >= points.size())
+    const std::size_t a = std::size_t(options.fixed_pair->first), b = std::size_t(options.fixed_pair->second);
+    if(a >= points.size() || b >= points.size())
       return finish(ERROR_WRONG_PARAMETER, "a fixed vertex is not a vertex of the mesh");
-    pair_component = component_of_vertex[fixed_pair->first];
-    if(pair_component == r.components || component_of_vertex[fixed_pair->second] == r.components)
+    if(graph.representative[a] == none || graph.representative[b] == none)
       return finish(ERROR_WRONG_PARAMETER, "a fixed vertex lies on no face");
-    if(component_of_vertex[fixed_pair->second] != pair_component)
+    fixed_pair = std::make_pair(graph.representative[a], graph.representative[b]);
+    if(fixed_pair->first == fixed_pair->second && a != b)
+      return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are at the same position, welded into one");
+    pair_component = graph.component[fixed_pair->first];
+    if(graph.component[fixed_pair->second] != pair_component)
       return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are not in the same connected component");
+    const std::array<std::size_t, 2> edge = {(std::min)(fixed_pair->first, fixed_pair->second),
+                                             (std::max)(fixed_pair->first, fixed_pair->second)};
+    if(!std::binary_search(graph.edges.begin(), graph.edges.end(), edge))
+      return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are not the two ends of an edge");
   }
 
   // Every component in mesh units (NO_FIT), then one layout and one fit for all.
-  std::vector<std::vector<std::size_t> > members(r.components);
-  for(std::size_t k = 0; k < component_of_polygon.size(); ++k)
-    members[component_of_polygon[k]].push_back(k);
   std::vector<std::array<double, 2> > uv(points.size(), {0., 0.});
-  Norm_preserving_parameterizer_3<Norm_preserving_triangle_mesh, InitialGuess, SolverTraits>
-    parameterizer(options.initial_guess, options.solver);
-  parameterizer.set_texture_fit(NO_FIT);
-  parameterizer.set_sign_refinement(options.sign_refinement_rounds, options.sign_refinement_tolerance);
-  parameterizer.set_euclidean_refinement(options.euclidean_refinement_iterations, options.euclidean_refinement_tolerance);
-  r.reports.reserve(r.components);
+  NP::Pipeline<InitialGuess, SolverTraits> pipeline(options.initial_guess, options.solver);
+  pipeline.settings().fit = NO_FIT;
+  pipeline.settings().sign_refinement = {options.sign_refinement_rounds, options.sign_refinement_tolerance};
+  pipeline.settings().euclidean_refinement = {options.euclidean_refinement_iterations,
+                                              options.euclidean_refinement_tolerance};
+  const std::vector<std::vector<std::size_t> > edges_of = NP::edges_by_component(graph);
+  std::vector<std::size_t> local(points.size(), none);
+  std::vector<std::array<double, 2> > component_uv;
+  r.reports.resize(r.components);
   for(std::size_t c = 0; c < r.components; ++c)
   {
-    status = NP::parameterize_soup_component(points, polygons, members[c],
-                                             c == pair_component ? fixed_pair : std::nullopt,
-                                             parameterizer, uv, message);
-    r.reports.push_back(parameterizer.report());
+    const auto component_start = std::chrono::steady_clock::now();
+    Norm_preserving_geometry geometry = NP::component_geometry(graph, c, edges_of, local);
+    Norm_preserving_report& component_report = r.reports[c];
+    std::optional<std::pair<std::size_t, std::size_t> > pair;
+    if(c == pair_component)
+      pair = std::make_pair(local[fixed_pair->first], local[fixed_pair->second]);
+    const bool has_extent = std::any_of(geometry.edges.begin(), geometry.edges.end(), [&](const auto& e) {
+      return geometry.points[e[0]] != geometry.points[e[1]];
+    });
+    if(has_extent)
+      status = pipeline.run(std::move(geometry), pair, component_uv, component_report);
+    else
+    {
+      // Every vertex at one position: the optimum of Eq. 5 is a point.
+      component_report.vertices = geometry.points.size();
+      component_report.edges = geometry.edges.size();
+      component_report.solver_status = SOLVER_CONVERGED;
+      component_uv.assign(geometry.points.size(), {0., 0.});
+      ++r.point_components;
+      status = pair && pair->first != pair->second ? ERROR_WRONG_PARAMETER : OK;
+      component_report.message = status == OK ? "" : "the fixed vertices are at the same position";
+    }
+    component_report.status = status;
+    component_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - component_start).count();
     if(status != OK)
-      return finish(status, "component " + std::to_string(c) + ": " + message);
-    r.objective += parameterizer.report().objective;
+      return finish(status, "component " + std::to_string(c) + ": " + component_report.message);
+    r.objective += component_report.objective;
+    for(std::size_t k = 0; k < component_uv.size(); ++k)
+      uv[graph.members[c][k]] = component_uv[k];
   }
+  if(r.point_components == r.components)
+    return finish(ERROR_WRONG_PARAMETER, "the mesh has zero extent: every vertex on a face is at the same position");
 
-  NP::lay_out_components(uv, component_of_vertex, r.components);
+  NP::lay_out_components(uv, graph.component, r.components);
   std::vector<std::array<double, 2> > on_faces;
   for(std::size_t i = 0; i < points.size(); ++i)
-    if(component_of_vertex[i] != r.components) on_faces.push_back(uv[i]);
+    if(graph.component[i] != none) on_faces.push_back(uv[i]);
   NP::fit_to_texture_space(on_faces, options.texture_fit, options.tiles_u, options.tiles_v);
   std::size_t k = 0;
   for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    if(component_of_vertex[i] == r.components)
+    if(graph.component[i] != none)
+      uv[i] = on_faces[k++];
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(graph.representative[i] != none)
     {
-      ++r.isolated_vertices;
-      continue;
+      const std::array<double, 2>& p = uv[graph.representative[i]];
+      put(uvmap, i, Point_2(p[0], p[1]));
     }
-    put(uvmap, i, Point_2(on_faces[k][0], on_faces[k][1]));
-    ++k;
-  }
   return finish(OK, std::string());
 }
 
@@ -231,6 +280,7 @@ Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
   soup_options.sign_refinement_tolerance = options.sign_refinement_tolerance;
   soup_options.euclidean_refinement_iterations = options.euclidean_refinement_iterations;
   soup_options.euclidean_refinement_tolerance = options.euclidean_refinement_tolerance;
+  soup_options.weld_coincident_vertices = options.weld_coincident_vertices;
   if(options.fixed_pair)
     soup_options.fixed_pair = std::make_pair(TM::Vertex_index(TM::size_type(get(index_of, options.fixed_pair->first))),
                                              TM::Vertex_index(TM::size_type(get(index_of, options.fixed_pair->second))));

@@ -17,7 +17,8 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
 
-// `component[i]` is the component of vertex i, or `count` for a vertex in none (left as is).
+// `component[i]` is the component of vertex i, or `count` or more for a vertex in none (left
+// as is).
 // Components are translated only: the scale, hence the texel density, stays common.
 inline void lay_out_components(std::vector<std::array<double, 2> >& uv,
                                const std::vector<std::size_t>& component, std::size_t count)
@@ -26,7 +27,7 @@ inline void lay_out_components(std::vector<std::array<double, 2> >& uv,
   std::vector<std::array<double, 2> > low(count, {inf, inf}), high(count, {-inf, -inf});
   for(std::size_t i = 0; i < uv.size(); ++i)
   {
-    if(component[i] == count) continue;
+    if(component[i] >= count) continue;
     for(int c = 0; c < 2; ++c)
     {
       low[component[i]][c] = (std::min)(low[component[i]][c], uv[i][c]);
@@ -68,7 +69,7 @@ inline void lay_out_components(std::vector<std::array<double, 2> >& uv,
     row_height = (std::max)(row_height, height[c]);
   }
   for(std::size_t i = 0; i < uv.size(); ++i)
-    if(component[i] != count)
+    if(component[i] < count)
       for(int c = 0; c < 2; ++c)
         uv[i][c] += shift[component[i]][c];
 }

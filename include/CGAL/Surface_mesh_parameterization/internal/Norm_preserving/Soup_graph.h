@@ -1,0 +1,230 @@
+// Step "extract" for a polygon soup: the edge graph the method works on, built from points
+// and polygons with no halfedge structure, so that any soup is accepted as it is (non-manifold
+// edges and vertices, inconsistent orientation, non-orientable surfaces, duplicate faces,
+// repeated corners). Coincident vertices are welded (optionally), every polygon is triangulated
+// on its own (paper step 1), the unique edges of the triangles are the graph, and its
+// connected components are the pieces the pipeline maps (doc/decisions.md, "Input").
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SOUP_GRAPH_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SOUP_GRAPH_H
+
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace Norm_preserving {
+
+// What the soup is made of, for the solve.
+struct Soup_graph
+{
+  static constexpr std::size_t none = std::size_t(-1);
+
+  // soup vertex -> the soup vertex it is welded to (the lowest index at its position; itself
+  // if not welded), `none` if on no polygon
+  std::vector<std::size_t> representative;
+  std::vector<std::array<double, 3> > positions;          // of the representatives, by soup index
+  std::vector<std::array<std::size_t, 2> > edges;         // representatives, {i, j} with i < j, sorted
+  std::vector<std::size_t> component;                     // representative -> component, `none` if not one
+  std::vector<std::vector<std::size_t> > members;         // component -> its representatives, increasing
+  std::size_t welded = 0;                                 // vertices merged into another
+  std::size_t unreferenced = 0;                           // vertices on no polygon
+  std::size_t repeated_corners = 0;                       // polygon corners dropped as repeats
+};
+
+// What nothing downstream can take: no polygon, a polygon corner that is not a vertex, a
+// non-finite position of a vertex on a polygon.
+template <typename PointRange, typename PolygonRange>
+Error_code check_polygon_soup(const PointRange& points, const PolygonRange& polygons, std::string& message)
+{
+  if(polygons.empty())
+  {
+    message = "the mesh has no face";
+    return ERROR_EMPTY_MESH;
+  }
+  std::size_t k = 0;
+  for(const auto& polygon : polygons)
+  {
+    for(const auto& corner : polygon)
+    {
+      const std::size_t i = std::size_t(corner);
+      if(i >= points.size())
+      {
+        message = "face " + std::to_string(k) + " refers to vertex " + std::to_string(i) + " of " +
+                  std::to_string(points.size());
+        return ERROR_WRONG_PARAMETER;
+      }
+      const auto& p = points[i];
+      if(!(std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
+           std::isfinite(CGAL::to_double(p.z()))))
+      {
+        message = "vertex " + std::to_string(i) + " has a non-finite coordinate";
+        return ERROR_WRONG_PARAMETER;
+      }
+    }
+    ++k;
+  }
+  return OK;
+}
+
+// `representative` and `welded` of a checked soup: referenced vertices at exactly the same
+// position share the lowest index among them if `weld`, otherwise each is its own.
+inline void weld_vertices(Soup_graph& graph, bool weld)
+{
+  std::vector<std::size_t> referenced;
+  for(std::size_t i = 0; i < graph.representative.size(); ++i)
+    if(graph.representative[i] != Soup_graph::none)
+      referenced.push_back(i);
+  if(!weld)
+    return;
+  const auto& p = graph.positions;
+  std::sort(referenced.begin(), referenced.end(), [&p](std::size_t i, std::size_t j) {
+    return p[i] < p[j] || (p[i] == p[j] && i < j);
+  });
+  for(std::size_t k = 1; k < referenced.size(); ++k)
+  {
+    const std::size_t previous = referenced[k - 1], i = referenced[k];
+    if(p[i] == p[previous])
+    {
+      graph.representative[i] = graph.representative[previous];
+      ++graph.welded;
+    }
+  }
+}
+
+// Builds the edge graph of a checked soup and its connected components, numbered in the
+// order of their first polygon. Linear in the size of the soup but for the sorts.
+template <typename PointRange, typename PolygonRange>
+Soup_graph build_soup_graph(const PointRange& points, const PolygonRange& polygons, bool weld)
+{
+  Soup_graph graph;
+  const std::size_t n = points.size();
+  graph.representative.assign(n, Soup_graph::none);
+  graph.positions.resize(n);
+  for(const auto& polygon : polygons)
+    for(const auto& corner : polygon)
+      graph.representative[std::size_t(corner)] = std::size_t(corner);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(graph.representative[i] == Soup_graph::none)
+    {
+      ++graph.unreferenced;
+      continue;
+    }
+    graph.positions[i] = {CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
+                          CGAL::to_double(points[i].z())};
+  }
+  weld_vertices(graph, weld);
+
+  // Each polygon through the weld, split into simple loops and triangulated.
+  std::vector<std::size_t> parent(n);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  const auto root = [&parent](std::size_t i) {
+    while(parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::vector<std::size_t> corners;
+  std::vector<std::vector<std::size_t> > loops;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<std::size_t> first_corners; // a representative of each polygon, for the numbering
+  const auto add_edge = [&](std::size_t i, std::size_t j) {
+    graph.edges.push_back({(std::min)(i, j), (std::max)(i, j)});
+    parent[root(i)] = root(j);
+  };
+  for(const auto& polygon : polygons)
+  {
+    corners.clear();
+    for(const auto& corner : polygon)
+      corners.push_back(graph.representative[std::size_t(corner)]);
+    if(corners.empty())
+      continue;
+    first_corners.push_back(corners.front());
+    loops.clear();
+    simple_loops(corners, loops);
+    std::size_t kept = 0;
+    for(const auto& loop : loops)
+    {
+      kept += loop.size();
+      if(loop.size() == 2)
+        add_edge(loop[0], loop[1]);
+      else if(loop.size() > 2)
+      {
+        triangulate_polygon(points, loop, triangles);
+        for(const auto& t : triangles)
+          for(int e = 0; e < 3; ++e)
+            add_edge(t[std::size_t(e)], t[std::size_t((e + 1) % 3)]);
+      }
+    }
+    graph.repeated_corners += corners.size() - kept;
+  }
+  std::sort(graph.edges.begin(), graph.edges.end());
+  graph.edges.erase(std::unique(graph.edges.begin(), graph.edges.end()), graph.edges.end());
+
+  std::vector<std::size_t> number(n, Soup_graph::none);
+  for(std::size_t i : first_corners)
+  {
+    std::size_t& c = number[root(i)];
+    if(c == Soup_graph::none)
+    {
+      c = graph.members.size();
+      graph.members.emplace_back();
+    }
+  }
+  graph.component.assign(n, Soup_graph::none);
+  for(std::size_t i = 0; i < n; ++i)
+    if(graph.representative[i] == i)
+    {
+      graph.component[i] = number[root(i)];
+      graph.members[graph.component[i]].push_back(i);
+    }
+  return graph;
+}
+
+// The geometry of component `c`: its representatives in increasing soup order, its edges in
+// those indices, sorted. `local` maps a representative to its index (filled for this component).
+inline Norm_preserving_geometry component_geometry(const Soup_graph& graph, std::size_t c,
+                                                   const std::vector<std::vector<std::size_t> >& edges_of,
+                                                   std::vector<std::size_t>& local)
+{
+  Norm_preserving_geometry geometry;
+  const std::vector<std::size_t>& members = graph.members[c];
+  geometry.points.reserve(members.size());
+  for(std::size_t k = 0; k < members.size(); ++k)
+  {
+    local[members[k]] = k;
+    geometry.points.push_back(graph.positions[members[k]]);
+  }
+  geometry.edges.reserve(edges_of[c].size());
+  for(std::size_t e : edges_of[c])
+    geometry.edges.push_back({local[graph.edges[e][0]], local[graph.edges[e][1]]});
+  return geometry;
+}
+
+// The edges of each component, in the graph's (sorted) order.
+inline std::vector<std::vector<std::size_t> > edges_by_component(const Soup_graph& graph)
+{
+  std::vector<std::vector<std::size_t> > edges_of(graph.members.size());
+  for(std::size_t e = 0; e < graph.edges.size(); ++e)
+    edges_of[graph.component[graph.edges[e][0]]].push_back(e);
+  return edges_of;
+}
+
+} // namespace Norm_preserving
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
