@@ -6,21 +6,27 @@
 // Cholesky (CHOLMOD when configured).
 //
 //   bench_norm_preserving [--benchmark_filter=mushroom/2] ...
-// The names are <method>/<mesh>/<subdivision steps>.
+// The names are <method>/<mesh>/<subdivision steps>. `soup` is the whole-soup call
+// (texture_polygon_soup) on the same vertices and triangles as `ours` (the parameterizer on
+// the Surface_mesh), for the comparison of the two paths:
+//   bench_norm_preserving --benchmark_filter='(ours|soup)/(cow/(0|3)|bunny00/0|mushroom/3)'
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Seam_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/property_map.h>
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/cut_to_disk.h>
+#include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -76,6 +82,27 @@ static void ours(benchmark::State& state, const std::string& name)
   state.counters["s_factor"] = benchmark::Counter(sum.factorization, per_run);
   state.counters["s_iterate"] = benchmark::Counter(sum.iterations, per_run);
   state.counters["s_write"] = benchmark::Counter(sum.write_back, per_run);
+}
+
+// The whole-soup call on the mesh's vertices and triangles (read outside the timing).
+static void soup(benchmark::State& state, const std::string& name)
+{
+  const Mesh& mesh = subdivided(name, int(state.range(0)));
+  std::vector<Kernel::Point_3> points(mesh.points().begin(), mesh.points().end());
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(auto f : faces(mesh))
+  {
+    const auto h = halfedge(f, mesh);
+    triangles.push_back({std::size_t(source(h, mesh)), std::size_t(target(h, mesh)),
+                         std::size_t(target(next(h, mesh), mesh))});
+  }
+  std::vector<Kernel::Point_2> uv(points.size());
+  SMP::Texture_polygon_mesh_report report;
+  for(auto _ : state)
+    if(SMP::texture_polygon_soup(points, triangles, CGAL::make_property_map(uv), {}, &report) != SMP::OK)
+      state.SkipWithError(report.message.c_str());
+  state.counters["vertices"] = double(points.size());
+  state.counters["components"] = double(report.components);
 }
 
 static void lscm(benchmark::State& state, const std::string& name)
@@ -140,5 +167,15 @@ BENCHMARK_CAPTURE(laplacian, mushroom, std::string("mushroom"))->Apply(series);
 BENCHMARK_CAPTURE(ours, cow, std::string("cow"))->Apply(series);
 BENCHMARK_CAPTURE(lscm, cow, std::string("cow"))->Apply(series);
 BENCHMARK_CAPTURE(laplacian, cow, std::string("cow"))->Apply(series);
+// The soup path against the mesh path.
+static void paths(benchmark::internal::Benchmark* b)
+{
+  b->Unit(benchmark::kSecond)->UseRealTime();
+}
+BENCHMARK_CAPTURE(ours, cow, std::string("cow"))->Apply(paths)->Arg(0);
+BENCHMARK_CAPTURE(ours, bunny00, std::string("bunny00"))->Apply(paths)->Arg(0);
+BENCHMARK_CAPTURE(soup, cow, std::string("cow"))->Apply(paths)->Arg(0)->Arg(3);
+BENCHMARK_CAPTURE(soup, bunny00, std::string("bunny00"))->Apply(paths)->Arg(0);
+BENCHMARK_CAPTURE(soup, mushroom, std::string("mushroom"))->Apply(paths)->Arg(3);
 
 BENCHMARK_MAIN();

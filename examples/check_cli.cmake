@@ -37,6 +37,39 @@ function(expect_textured basename)
   if(NOT nv EQUAL nvt OR nv EQUAL 0)
     message(FATAL_ERROR "${basename}.obj: ${nv} vertices but ${nvt} texture coordinates")
   endif()
+  set(${basename}_vertices ${nv} PARENT_SCOPE)
+endfunction()
+
+# A small output: every uv in [0,1], and every face corner `i/i` names an existing vertex and
+# its own texture coordinate.
+function(expect_faces_reference_vt basename)
+  expect_textured(${basename})
+  file(STRINGS "${WORK}/${basename}.obj" v REGEX "^v ")
+  list(LENGTH v nv)
+  file(STRINGS "${WORK}/${basename}.obj" vt REGEX "^vt ")
+  foreach(line ${vt})
+    string(REGEX REPLACE "^vt ([^ ]+) ([^ ]+)$" "\\1;\\2" uv "${line}")
+    foreach(value ${uv})
+      if(value LESS 0 OR value GREATER 1)
+        message(FATAL_ERROR "${basename}.obj: ${line} is outside [0,1]")
+      endif()
+    endforeach()
+  endforeach()
+  file(STRINGS "${WORK}/${basename}.obj" elements REGEX "^[fl] ")
+  if(NOT elements)
+    message(FATAL_ERROR "${basename}.obj has no face")
+  endif()
+  foreach(line ${elements})
+    string(REGEX MATCHALL "[0-9]+/[0-9]+" corners "${line}")
+    foreach(corner ${corners})
+      string(REPLACE "/" ";" pair "${corner}")
+      list(GET pair 0 vi)
+      list(GET pair 1 ti)
+      if(NOT vi EQUAL ti OR vi LESS 1 OR vi GREATER nv)
+        message(FATAL_ERROR "${basename}.obj: '${line}' does not reference its vertices' vt")
+      endif()
+    endforeach()
+  endforeach()
 endfunction()
 
 run(0 "usage: texture_mesh.*--tiles MxN" --help)
@@ -44,21 +77,56 @@ run(2 "unknown option --bogus" --bogus)
 run(2 "--tiles takes MxN" --tiles 0x2)
 run(2 "--fixed-pair takes two vertex indices" --fixed-pair 1)
 
-# Inputs that cannot be read or textured: exit 1, a clear message, no file.
-run(1 "cannot read a polygon mesh from .*missing.off" missing.off out_missing)
+# Inputs that cannot be read or textured: exit 1, a message that says what is wrong, no file.
+run(1 "cannot read .*missing.off: no such file" missing.off out_missing)
 expect_nothing_written(out_missing)
 file(WRITE "${WORK}/garbage.off" "this is not a mesh\n")
-run(1 "cannot read a polygon mesh from .*garbage.off" garbage.off out_garbage)
+run(1 "cannot read .*garbage.off: not a valid off file" garbage.off out_garbage)
 expect_nothing_written(out_garbage)
+file(WRITE "${WORK}/empty.obj" "")
+run(1 "cannot read .*empty.obj: the file is empty" empty.obj out_empty)
+expect_nothing_written(out_empty)
+file(WRITE "${WORK}/points.obj" "v 0 0 0\nv 1 0 0\n")
+run(1 "cannot read .*points.obj: .*no face" points.obj out_points)
+expect_nothing_written(out_points)
 file(WRITE "${WORK}/mesh.xyz" "0 0 0\n")
-run(1 "cannot read a polygon mesh from .*mesh.xyz" mesh.xyz out_unsupported)
+run(1 "cannot read .*mesh.xyz: not a mesh format: .xyz" mesh.xyz out_unsupported)
 expect_nothing_written(out_unsupported)
-# Two triangles that share only a vertex: a non-manifold vertex.
-file(WRITE "${WORK}/bowtie.off" "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n")
-run(1 "error: .*non-manifold" bowtie.off out_bowtie)
-expect_nothing_written(out_bowtie)
 run(1 "error: .*fixed vertices are not" "${MESHES}/cow.off" out_badpair --fixed-pair 0,2000)
 expect_nothing_written(out_badpair)
+run(1 "error: .*the file has 2904 vertices" "${MESHES}/cow.off" out_farpair --fixed-pair 0,5000)
+expect_nothing_written(out_farpair)
+
+# Every defect of real files is textured with the default options.
+# Two triangles that share only a vertex (a bow tie).
+file(WRITE "${WORK}/bowtie.off" "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n")
+# Three triangles on one edge (a fin).
+file(WRITE "${WORK}/fin.off" "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n")
+# Two triangles of opposite orientation on one edge.
+file(WRITE "${WORK}/opposite.off" "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0.5\n3 0 1 2\n3 1 2 3\n")
+# A Moebius strip of eight quads.
+file(WRITE "${WORK}/moebius.off" "OFF\n16 8 0\n0.6 0 0\n1.4 0 0\n0.4458 0.4458 -0.1531\n0.9684 0.9684 0.1531\n"
+           "0 0.7172 -0.2828\n0 1.2828 0.2828\n-0.5989 0.5989 -0.3696\n-0.8153 0.8153 0.3696\n-1 0 -0.4\n"
+           "-1 0 0.4\n-0.8153 -0.8153 -0.3696\n-0.5989 -0.5989 0.3696\n0 -1.2828 -0.2828\n0 -0.7172 0.2828\n"
+           "0.9684 -0.9684 -0.1531\n0.4458 -0.4458 0.1531\n4 0 2 3 1\n4 2 4 5 3\n4 4 6 7 5\n4 6 8 9 7\n"
+           "4 8 10 11 9\n4 10 12 13 11\n4 12 14 15 13\n4 14 1 0 15\n")
+# An export split along a uv seam (coincident vertices), with vt, vn, groups and a face
+# with a repeated corner, a face of two vertices and a vertex on no face.
+file(WRITE "${WORK}/exported.obj" "# exported\no Plane\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 1 0 0\nv 2 0 0.3\n"
+           "v 2 1 0\nv 1 1 0\nv 5 5 5\nvt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\ns off\nusemtl none\n"
+           "f 1/1/1 2/2/1 3/3/1 4/1/1\nf 5/1/1 6/2/1 7/3/1 8/3/1\nf 7/1/1 7/2/1 6/3/1\nf 6/1 7/2\n")
+foreach(defect bowtie fin opposite moebius)
+  run(0 "wrote ${defect}_textured.obj" ${defect}.off)
+  expect_faces_reference_vt(${defect}_textured)
+endforeach()
+run(0 "2 coincident vertices welded.*wrote exported_textured.obj" exported.obj)
+expect_faces_reference_vt(exported_textured)
+file(READ "${WORK}/exported_textured_report.txt" report)
+if(NOT report MATCHES "vertices on no face \\(no uv, written as vt 0 0\\): 1\n.*welded: 2\n.*repeats: 1\n")
+  message(FATAL_ERROR "exported_textured_report.txt does not count the defects:\n${report}")
+endif()
+run(0 "2 component" exported.obj exported_apart --keep-coincident)
+expect_faces_reference_vt(exported_apart)
 
 # Every input format, and the options.
 run(0 "wrote cow.obj" "${MESHES}/cow.off" cow --guess combination --tiles 2x3 --fit clamp)
@@ -71,9 +139,7 @@ file(READ "${WORK}/sphere_report.txt" report)
 if(NOT report MATCHES "sign refinement, Euclidean refinement")
   message(FATAL_ERROR "sphere_report.txt does not record the refinements:\n${report}")
 endif()
-run(1 "non-manifold.*--repair splits" "${MESHES}/pig.stl" out_pig)
-expect_nothing_written(out_pig)
-run(0 "--repair: split [1-9][0-9]* non-manifold vertices.*wrote pig.obj" "${MESHES}/pig.stl" pig --repair)
+run(0 "wrote pig.obj" "${MESHES}/pig.stl" pig)
 expect_textured(pig)
 
 # --tiles 2x3 with the clamp fit: u within [0,2], v within [0,3], one of them reaching its end.

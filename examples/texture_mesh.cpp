@@ -2,20 +2,21 @@
 // collection) with the norm-preserving parameterizer and writes a textured OBJ with its MTL
 // and a checkerboard PNG, the UV layout as an SVG and a distortion report. Run with --help.
 
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Combination_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Graph_based_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/property_map.h>
 
 #include "textured_obj_writer.h"
 #include "uv_layout_svg.h"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -29,22 +30,31 @@
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
 using Kernel = CGAL::Simple_cartesian<double>;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using Vertex = Mesh::Vertex_index;
-using UV_map = Mesh::Property_map<Vertex, Kernel::Point_2>;
+using Point_3 = Kernel::Point_3;
+using Polygon = std::vector<std::size_t>;
+using UV = std::vector<Kernel::Point_2>;
+using Vertex = SMP::Norm_preserving_triangle_mesh::Vertex_index;
+
+// The soup as read: vertices and faces in the file's order.
+struct Soup
+{
+  std::vector<Point_3> points;
+  std::vector<Polygon> polygons;
+};
 
 const char* const usage =
   "usage: texture_mesh [options] [input] [output]\n"
   "\n"
-  "Textures a polygon mesh of any topology (closed, with holes, several components) with the\n"
-  "norm-preserving parameterization of Lai & Cheng, with no cut and no seam, and writes\n"
+  "Textures any polygon soup (closed, with holes, several components, non-manifold,\n"
+  "inconsistently oriented or non-orientable) with the norm-preserving parameterization of\n"
+  "Lai & Cheng, with no cut and no seam, and writes\n"
   "  output.obj         the mesh with one vt per vertex, using output.mtl\n"
   "  output.mtl         a material whose texture is output.png\n"
   "  output.png         a checkerboard texture\n"
   "  output_uv.svg      the UV layout (flipped faces in red)\n"
   "  output_report.txt  the objective, the time and the distortion measures\n"
   "\n"
-  "  input    OFF, OBJ, PLY or STL mesh (default: the cow of CGAL's collection)\n"
+  "  input    OFF, OBJ, PLY, STL or GOCAD TS file (default: the cow of CGAL's collection)\n"
   "  output   basename of the files written (default: cow_textured)\n"
   "\n"
   "options:\n"
@@ -57,7 +67,9 @@ const char* const usage =
   "  --refine-signs                re-solve with the signs of the solution (at most 10 rounds)\n"
   "  --refine-euclidean            then minimize the Euclidean edge-length error from the\n"
   "                                solution (stress majorization, at most 1000 steps)\n"
-  "  --repair                      split non-manifold vertices first (common in STL files)\n"
+  "  --keep-coincident             do not weld vertices at the same position (by default they\n"
+  "                                are one vertex for the solve, so a file split along old\n"
+  "                                seams gets no seam)\n"
   "  --help                        print this and exit\n"
   "\n"
   "Nothing is written unless every file can be. Exit status 0 on success, 1 on bad input or\n"
@@ -71,7 +83,7 @@ struct Settings
   SMP::Texture_fit fit = SMP::UNIFORM_FIT;
   int tiles_u = 1, tiles_v = 1;
   std::optional<std::pair<std::size_t, std::size_t> > fixed_pair;
-  bool repair = false;
+  bool weld = true;
   bool refine_signs = false;
   bool refine_euclidean = false;
 };
@@ -89,8 +101,8 @@ std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
     };
     if(arg == "--help" || arg == "-h")
       help = true;
-    else if(arg == "--repair")
-      s.repair = true;
+    else if(arg == "--keep-coincident")
+      s.weld = false;
     else if(arg == "--refine-signs")
       s.refine_signs = true;
     else if(arg == "--refine-euclidean")
@@ -154,23 +166,64 @@ auto with_progress(const std::string& what, Work work)
 }
 
 template <typename InitialGuess>
-SMP::Error_code texture(const Mesh& mesh, UV_map uv, const Settings& s, SMP::Texture_polygon_mesh_report& report)
+SMP::Error_code texture(const Soup& soup, UV& uv, const Settings& s, SMP::Texture_polygon_mesh_report& report)
 {
-  SMP::Texture_polygon_mesh_options<Mesh, InitialGuess> options;
+  SMP::Texture_polygon_mesh_options<SMP::Norm_preserving_triangle_mesh, InitialGuess> options;
   options.texture_fit = s.fit;
   options.tiles_u = s.tiles_u;
   options.tiles_v = s.tiles_v;
   options.sign_refinement_rounds = s.refine_signs ? 10 : 0;
   options.euclidean_refinement_iterations = s.refine_euclidean ? 1000 : 0;
+  options.weld_coincident_vertices = s.weld;
   if(s.fixed_pair)
-    options.fixed_pair = std::make_pair(Vertex(Mesh::size_type(s.fixed_pair->first)),
-                                        Vertex(Mesh::size_type(s.fixed_pair->second)));
-  return SMP::texture_polygon_mesh(mesh, uv, options, &report);
+  {
+    if(s.fixed_pair->first >= soup.points.size() || s.fixed_pair->second >= soup.points.size())
+    {
+      report.message = "--fixed-pair: the file has " + std::to_string(soup.points.size()) + " vertices";
+      return SMP::ERROR_WRONG_PARAMETER;
+    }
+    options.fixed_pair = std::make_pair(Vertex(Vertex::size_type(s.fixed_pair->first)),
+                                        Vertex(Vertex::size_type(s.fixed_pair->second)));
+  }
+  return SMP::texture_polygon_soup(soup.points, soup.polygons, CGAL::make_property_map(uv), options, &report);
+}
+
+// Reads `path` with CGAL's polygon soup reader; on failure, says what is wrong.
+std::optional<std::string> read_soup(const std::string& path, Soup& soup)
+{
+  std::error_code ec;
+  if(!fs::exists(path, ec))
+    return "no such file";
+  if(!fs::is_regular_file(path, ec))
+    return "not a regular file";
+  if(fs::file_size(path, ec) == 0)
+    return "the file is empty";
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if(extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl" && extension != ".ts")
+    return "not a mesh format: " + (extension.empty() ? std::string("no extension") : extension) +
+           " (OFF, OBJ, PLY, STL and GOCAD TS files are read)";
+  // The reader says why it failed on the standard streams: keep its first line.
+  std::ostringstream said;
+  std::streambuf* const err = std::cerr.rdbuf(said.rdbuf());
+  std::streambuf* const out = std::cout.rdbuf(said.rdbuf());
+  const bool read = CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons, CGAL::parameters::verbose(true));
+  std::cerr.rdbuf(err);
+  std::cout.rdbuf(out);
+  if(read && !soup.polygons.empty())
+    return std::nullopt;
+  std::string reason = said.str();
+  reason = reason.substr(0, reason.find('\n'));
+  const std::string format = extension.substr(1);
+  if(read || (!soup.points.empty() && soup.polygons.empty() && reason.find("empty") != std::string::npos))
+    return "the " + format + " file has no face";
+  return "not a valid " + format + " file" + (reason.empty() ? std::string() : ": " + reason);
 }
 
 // Writes every output file into a scratch directory beside them, then moves them in place:
 // on any failure nothing is left behind.
-bool write_outputs(const Settings& s, const Mesh& mesh, const Mesh& triangles, UV_map uv, const std::string& report)
+bool write_outputs(const Settings& s, const Soup& soup, const UV& uv, const std::vector<char>& has_uv,
+                   const std::string& report)
 {
   const fs::path target = fs::absolute(s.output);
   const fs::path scratch = target.parent_path() / (target.filename().string() + ".partial");
@@ -184,8 +237,16 @@ bool write_outputs(const Settings& s, const Mesh& mesh, const Mesh& triangles, U
   std::ofstream text((scratch / names[4]).string());
   text << report;
   text.close();
-  bool ok = bool(text) && np_examples::write_textured_obj((scratch / stem).string(), mesh, uv) &&
-            np_examples::write_uv_layout_svg((scratch / names[3]).string(), triangles, uv);
+  std::vector<std::vector<std::array<double, 2> > > layout;
+  for(const Polygon& polygon : soup.polygons)
+    if(polygon.size() > 2 && std::all_of(polygon.begin(), polygon.end(), [&](std::size_t i) { return has_uv[i]; }))
+    {
+      layout.emplace_back();
+      for(std::size_t i : polygon)
+        layout.back().push_back({uv[i].x(), uv[i].y()});
+    }
+  bool ok = bool(text) && np_examples::write_textured_obj((scratch / stem).string(), soup.points, soup.polygons, uv) &&
+            np_examples::write_uv_layout_svg((scratch / names[3]).string(), layout);
   for(std::size_t k = 0; ok && k < names.size(); ++k)
   {
     fs::rename(scratch / names[k], target.parent_path() / names[k], ec);
@@ -210,37 +271,33 @@ int main(int argc, char** argv)
     return 0;
   }
 
-  Mesh mesh;
-  const bool read = with_progress("reading " + s.input, [&] {
-    return fs::is_regular_file(s.input) && CGAL::IO::read_polygon_mesh(s.input, mesh) && !is_empty(mesh);
-  });
-  if(!read)
+  Soup soup;
+  const std::optional<std::string> unread = with_progress("reading " + s.input, [&] { return read_soup(s.input, soup); });
+  if(unread)
   {
-    std::cerr << "error: cannot read a polygon mesh from " << s.input
-              << " (it must exist and be a valid OFF, OBJ, PLY or STL polygon mesh)\n";
+    std::cerr << "error: cannot read " << s.input << ": " << *unread << '\n';
     return 1;
   }
 
-  if(s.repair)
-  {
-    const std::size_t split = CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(mesh);
-    if(split > 0)
-      std::cerr << "--repair: split " << split << " non-manifold vertices\n";
-  }
-
-  UV_map uv = mesh.add_property_map<Vertex, Kernel::Point_2>("v:uv").first;
+  // Vertices on no face keep {0, 0}: one vt per v in the OBJ.
+  const Kernel::Point_2 no_uv(std::nan(""), std::nan(""));
+  UV uv(soup.points.size(), no_uv);
   SMP::Texture_polygon_mesh_report report;
-  const SMP::Error_code status = with_progress("texturing " + std::to_string(num_vertices(mesh)) + " vertices", [&] {
-    if(s.guess == "combination") return texture<SMP::Combination_initial_guess>(mesh, uv, s, report);
-    if(s.guess == "graph") return texture<SMP::Graph_based_initial_guess>(mesh, uv, s, report);
-    return texture<SMP::XY_min_max_initial_guess>(mesh, uv, s, report);
+  const SMP::Error_code status = with_progress("texturing " + std::to_string(soup.points.size()) + " vertices", [&] {
+    if(s.guess == "combination") return texture<SMP::Combination_initial_guess>(soup, uv, s, report);
+    if(s.guess == "graph") return texture<SMP::Graph_based_initial_guess>(soup, uv, s, report);
+    return texture<SMP::XY_min_max_initial_guess>(soup, uv, s, report);
   });
   if(status != SMP::OK)
   {
     std::cerr << "error: " << SMP::error_message(status) << ": " << report.message << '\n';
-    if(!s.repair && report.message.find("non-manifold") != std::string::npos)
-      std::cerr << "(--repair splits non-manifold vertices)\n";
     return 1;
+  }
+  std::vector<char> has_uv(uv.size());
+  for(std::size_t i = 0; i < uv.size(); ++i)
+  {
+    has_uv[i] = !std::isnan(uv[i].x());
+    if(!has_uv[i]) uv[i] = Kernel::Point_2(0, 0);
   }
 
   std::size_t active = 0, constraints = 0, iterations = 0;
@@ -253,18 +310,15 @@ int main(int argc, char** argv)
     initial += r.initial_objective;
     kkt = std::max(kkt, r.kkt_residual);
   }
-  // Distortion is measured on triangles; triangulating adds no vertex, so uvs stay valid.
-  Mesh triangles = mesh;
-  CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
-  UV_map triangle_uv = triangles.property_map<Vertex, Kernel::Point_2>("v:uv").first;
-  auto on_face = triangles.add_property_map<Vertex, bool>("v:on_face", true).first;
-  for(Vertex v : vertices(triangles))
-    put(on_face, v, !triangles.is_isolated(v));
-  const SMP::Parameterization_distortion d = SMP::measure_distortion(triangles, triangle_uv, on_face);
+  const SMP::Parameterization_distortion d =
+    SMP::measure_soup_distortion(soup.points, soup.polygons, CGAL::make_property_map(uv), CGAL::make_property_map(has_uv));
 
   std::ostringstream summary;
-  summary << s.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces, "
-          << report.components << " component(s)\n"
+  summary << s.input << ": " << soup.points.size() << " vertices, " << soup.polygons.size() << " faces, "
+          << report.components << " component(s)";
+  if(report.welded_vertices > 0)
+    summary << ", " << report.welded_vertices << " coincident vertices welded";
+  summary << '\n'
           << "objective (Eq. 3): " << initial << " at the guess -> " << report.objective << ", "
           << active << "/" << constraints << " sign constraints active, " << iterations
           << " solver iterations, KKT residual " << kkt << '\n'
@@ -281,8 +335,11 @@ int main(int argc, char** argv)
           << "area distortion (RMS log ratio): " << d.area_distortion << '\n'
           << "L2 / Linf stretch: " << d.l2_stretch << " / " << d.linf_stretch << '\n'
           << "faces of zero uv area: " << d.degenerate_uv_faces << '\n'
-          << "vertices on no face (no uv): " << report.isolated_vertices << '\n';
-  if(!with_progress("writing " + s.output, [&] { return write_outputs(s, mesh, triangles, uv, details.str()); }))
+          << "vertices on no face (no uv, written as vt 0 0): " << report.isolated_vertices << '\n'
+          << "coincident vertices welded: " << report.welded_vertices << '\n'
+          << "face corners dropped as repeats: " << report.repeated_corners << '\n'
+          << "components of zero extent (mapped to a point): " << report.point_components << '\n';
+  if(!with_progress("writing " + s.output, [&] { return write_outputs(s, soup, uv, has_uv, details.str()); }))
   {
     std::cerr << "error: cannot write " << s.output << ".obj/.mtl/.png/_uv.svg/_report.txt; nothing written\n";
     return 1;

@@ -4,8 +4,6 @@
 #ifndef NP_EXAMPLES_TEXTURED_OBJ_WRITER_H
 #define NP_EXAMPLES_TEXTURED_OBJ_WRITER_H
 
-#include <CGAL/boost/graph/iterator.h>
-
 #include <array>
 #include <cstdint>
 #include <fstream>
@@ -91,9 +89,12 @@ inline bool write_checkerboard_png(const std::string& path, int size = 512, int 
   return write_png(path, size, size, rgb);
 }
 
-// Writes `basename`.obj, `basename`.mtl and `basename`.png; uvs from `uvmap`.
-template <typename PolygonMesh, typename VertexUVMap>
-bool write_textured_obj(const std::string& basename, const PolygonMesh& mesh, VertexUVMap uvmap)
+// Writes `basename`.obj, `basename`.mtl and `basename`.png: the soup's vertices in their
+// order, one `vt` per vertex from `uv` (2D points, one per vertex), and its faces as
+// they are (a face of two vertices as a line).
+template <typename PointRange, typename PolygonRange, typename UVRange>
+bool write_textured_obj(const std::string& basename, const PointRange& points, const PolygonRange& polygons,
+                        const UVRange& uv)
 {
   const std::string stem = basename.substr(basename.find_last_of('/') + 1);
   std::ofstream mtl(basename + ".mtl");
@@ -101,21 +102,17 @@ bool write_textured_obj(const std::string& basename, const PolygonMesh& mesh, Ve
   std::ofstream obj(basename + ".obj");
   obj.precision(17);
   obj << "mtllib " << stem << ".mtl\nusemtl checkerboard\n";
-  std::size_t index = 0;
-  auto ids = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
-  for(auto v : vertices(mesh))
-  {
-    put(ids, v, ++index);
-    const auto& p = get(CGAL::vertex_point, mesh, v);
+  for(const auto& p : points)
     obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-  }
-  for(auto v : vertices(mesh))
-    obj << "vt " << get(uvmap, v).x() << ' ' << get(uvmap, v).y() << '\n';
-  for(auto f : faces(mesh))
+  for(const auto& t : uv)
+    obj << "vt " << t.x() << ' ' << t.y() << '\n';
+  for(const auto& polygon : polygons)
   {
-    obj << 'f';
-    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      obj << ' ' << get(ids, v) << '/' << get(ids, v);
+    if(polygon.size() < 2)
+      continue;
+    obj << (polygon.size() == 2 ? 'l' : 'f');
+    for(std::size_t i : polygon)
+      obj << ' ' << i + 1 << '/' << i + 1;
     obj << '\n';
   }
   return bool(obj) && bool(mtl) && write_checkerboard_png(basename + ".png");

@@ -33,18 +33,10 @@ struct Uv_layout_frame
 // every k-th face is written (the smallest k that keeps at most `max_faces`), which keeps the
 // file small: they are drawn widened, without edges, so that the picture shows which area is
 // covered, and the title says so. Returns false when the file cannot be written.
-template <typename TriangleMesh, typename VertexUVMap>
-bool write_uv_layout_svg(const std::string& path, const TriangleMesh& mesh, VertexUVMap uv,
-                         std::size_t max_faces = 10000)
+inline bool write_uv_layout_svg(const std::string& path,
+                                const std::vector<std::vector<std::array<double, 2> > >& polygons,
+                                std::size_t max_faces = 10000)
 {
-  std::vector<std::vector<std::array<double, 2> > > polygons;
-  for(auto f : faces(mesh))
-  {
-    polygons.emplace_back();
-    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      polygons.back().push_back({double(get(uv, v).x()), double(get(uv, v).y())});
-  }
-
   const double infinity = std::numeric_limits<double>::infinity();
   double low[2] = {infinity, infinity}, high[2] = {-infinity, -infinity};
   bool in_unit_square = true;
@@ -114,6 +106,21 @@ bool write_uv_layout_svg(const std::string& path, const TriangleMesh& mesh, Vert
   }
   svg << "</svg>\n";
   return bool(svg);
+}
+
+// The layout of the faces of `mesh` under `uv`, as above.
+template <typename PolygonMesh, typename VertexUVMap>
+bool write_uv_layout_svg(const std::string& path, const PolygonMesh& mesh, VertexUVMap uv,
+                         std::size_t max_faces = 10000)
+{
+  std::vector<std::vector<std::array<double, 2> > > polygons;
+  for(auto f : faces(mesh))
+  {
+    polygons.emplace_back();
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      polygons.back().push_back({double(get(uv, v).x()), double(get(uv, v).y())});
+  }
+  return write_uv_layout_svg(path, polygons, max_faces);
 }
 
 } // namespace np_examples
