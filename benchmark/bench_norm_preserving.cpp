@@ -9,7 +9,7 @@
 // The names are <method>/<mesh>/<subdivision steps>. `soup` is the whole-soup call
 // (texture_polygon_soup) on the same vertices and triangles as `ours` (the parameterizer on
 // the Surface_mesh), for the comparison of the two paths:
-//   bench_norm_preserving --benchmark_filter='(ours|soup)/(cow/(0|3)|bunny00/0|mushroom/3)'
+//   bench_norm_preserving --benchmark_filter='(ours|soup)/(cow/(0|3)|bunny00/0|mushroom/3)/'
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>

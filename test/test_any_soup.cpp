@@ -9,6 +9,7 @@
 #include "test_runs.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Surface_mesh_parameterization/Interior_point_quadratic_program_traits.h>
 
 #include <gtest/gtest.h>
@@ -369,6 +370,38 @@ TEST_P(CollectionSoup, IsTextured)
     return;
   }
   expect_textured(t, referenced_vertices(soup));
+}
+
+// A manifold triangle mesh of one component gives the same edges through both paths, hence
+// the same objective, bit for bit (coincident vertices kept apart, as a halfedge mesh keeps them).
+TEST_P(CollectionSoup, GivesTheObjectiveOfTheMeshPath)
+{
+  np_test::Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(GetParam(), mesh) || faces(mesh).empty() || !CGAL::is_triangle_mesh(mesh))
+    GTEST_SKIP() << "not a triangle mesh that a Surface_mesh reads";
+  std::vector<Point_3> points(mesh.points().begin(), mesh.points().end());
+  Polygons polygons;
+  for(auto f : faces(mesh))
+  {
+    polygons.emplace_back();
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      polygons.back().push_back(std::size_t(v));
+  }
+  Textured_soup::Soup_options apart;
+  apart.weld_coincident_vertices = false;
+  Textured_soup soup(points, polygons, apart);
+  ASSERT_EQ(soup.status, SMP::OK) << soup.report.message;
+  if(soup.report.components != 1 || soup.report.isolated_vertices != 0)
+    GTEST_SKIP() << "several components";
+  np_test::Mapped_mesh run(mesh);
+  np_test::Parameterizer parameterizer;
+  parameterizer.set_automatic_fixed_pair();
+  run.parameterize(parameterizer, *halfedges(run.mesh).begin());
+  ASSERT_EQ(run.status, SMP::OK) << run.report.message;
+  EXPECT_EQ(run.report.edges, soup.report.reports[0].edges);
+  EXPECT_EQ(run.report.objective, soup.report.objective);
+  for(auto v : vertices(run.mesh))
+    EXPECT_NEAR(get(run.uv, v).x(), soup.uv[std::size_t(v)].x(), 1e-12);
 }
 
 std::vector<std::string> collection_files()

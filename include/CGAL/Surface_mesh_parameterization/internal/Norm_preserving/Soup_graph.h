@@ -152,6 +152,12 @@ Soup_graph build_soup_graph(const PointRange& points, const PolygonRange& polygo
     if(corners.empty())
       continue;
     first_corners.push_back(corners.front());
+    if(corners.size() == 3 && corners[0] != corners[1] && corners[1] != corners[2] && corners[0] != corners[2])
+    {
+      for(int e = 0; e < 3; ++e) // a proper triangle, the common case, as it is
+        add_edge(corners[std::size_t(e)], corners[std::size_t((e + 1) % 3)]);
+      continue;
+    }
     loops.clear();
     simple_loops(corners, loops);
     std::size_t kept = 0;
