@@ -14,8 +14,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -513,6 +516,30 @@ TEST(FuzzRegression, HugeCoordinateInAHexagon)
                                          "4 9 7 6 8\n4 11 5 2 10\n4 11 10 6 7\n");
   EXPECT_EQ(soup.status, SMP::OK) << soup.report.message;
 }
+
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+// The METIS ordering runs under the package's lock (the race it prevents shows only now and
+// then): a parameterizer started while the lock is held cannot finish until it is released.
+TEST(Threads, TheMetisOrderingWaitsForTheLock)
+{
+  const Mesh mesh = np_test::load_mesh("nefertiti");
+  std::atomic<bool> done(false);
+  std::unique_lock<std::mutex> held(SMP::internal::Norm_preserving::metis_mutex());
+  std::thread worker([&] {
+    Mapped_mesh mapped(mesh);
+    Parameterizer parameterizer;
+    mapped.parameterize(parameterizer, first_halfedge(mapped.mesh));
+    done = true;
+  });
+  // Without the lock the parameterizer (milliseconds) would be done long before.
+  for(int k = 0; k < 200 && !done; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_FALSE(done) << "the analysis did not wait for the METIS lock";
+  held.unlock();
+  worker.join();
+  EXPECT_TRUE(done);
+}
+#endif
 
 // Determinism and thread safety: the parameterizer keeps no shared state.
 TEST(Threads, TwoParameterizersOnTwoThreadsGiveTheSequentialUvs)

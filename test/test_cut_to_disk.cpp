@@ -3,6 +3,7 @@
 
 #include "test_meshes.h"
 
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
 #include <CGAL/Surface_mesh_parameterization/cut_to_disk.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -238,7 +239,7 @@ TEST_P(CutToDiskThenLscm, ParameterizesTheSeamMeshWithCgalLscm)
   auto uv = m.mesh.add_property_map<Mesh::Halfedge_index, np_test::Point_2>("h:uv").first;
   const SMP::Error_code status =
     SMP::parameterize(*m.seam_mesh, SMP::LSCM_parameterizer_3<Seam_mesh>(), result.border_halfedge, uv);
-  ASSERT_EQ(status, SMP::OK) << SMP::get_error_message(status);
+  ASSERT_EQ(status, SMP::OK) << SMP::error_message(status);
   for(auto v : vertices(*m.seam_mesh))
   {
     const np_test::Point_2& p = get(uv, halfedge(v, *m.seam_mesh));

@@ -165,9 +165,85 @@ TEST(NormPreservingADMMSolver, ReportsTheIterationLimitWithAFeasiblePoint)
   ASSERT_EQ(run.status, SMP::OK) << run.report.message;
   EXPECT_EQ(run.report.solver_status, SMP::SOLVER_ITERATION_LIMIT);
   EXPECT_EQ(run.report.solver_iterations, 20);
-  EXPECT_NE(run.report.message.find("iteration limit"), std::string::npos);
+  EXPECT_TRUE(run.report.message.empty()) << run.report.message;
+  EXPECT_NE(run.report.warning.find("iteration limit"), std::string::npos);
   EXPECT_EQ(run.report.max_constraint_violation, 0.);
   EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective);
+}
+
+// On its time limit (zero: the first check) likewise.
+TEST(NormPreservingADMMSolver, ReportsTheTimeLimitWithAFeasiblePoint)
+{
+  Mapped_mesh run(np_test::load_mesh("camel"));
+  SMP::Norm_preserving_parameterizer_3<Mesh> limited(SMP::XY_min_max_initial_guess(),
+                                                     SMP::Norm_preserving_ADMM_solver(1e-9, 20000, 0.));
+  run.parameterize(limited, *halfedges(run.mesh).begin());
+  ASSERT_EQ(run.status, SMP::OK) << run.report.message;
+  EXPECT_EQ(run.report.solver_status, SMP::SOLVER_TIME_LIMIT);
+  EXPECT_LT(run.report.solver_iterations, 20000);
+  EXPECT_NE(run.report.warning.find("time limit"), std::string::npos);
+  EXPECT_EQ(run.report.max_constraint_violation, 0.);
+  EXPECT_LE(run.report.objective, run.report.initial_objective);
+}
+
+// A model of NormPreservingSolver that finds no solution, as a factorization may fail.
+struct Failing_solver
+{
+  struct State { };
+  bool solve(const SMP::Norm_preserving_problem&, std::vector<std::array<double, 2> >&, State&,
+             SMP::Norm_preserving_solve_report& report) const
+  {
+    report.message = "no factorization";
+    return false;
+  }
+};
+
+TEST(NormPreservingSolverConcept, AFailedSolveLeavesTheMapUntouchedAndTheParameterizerReusable)
+{
+  Mapped_mesh run(np_test::load_mesh("nefertiti"));
+  SMP::Norm_preserving_parameterizer_3<Mesh, SMP::XY_min_max_initial_guess, Failing_solver> failing;
+  run.parameterize(failing, *halfedges(run.mesh).begin());
+  EXPECT_EQ(run.status, SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM);
+  EXPECT_EQ(run.report.message, "the QP solver failed: no factorization");
+  EXPECT_EQ(run.report.solver_status, SMP::SOLVER_FAILED);
+  EXPECT_TRUE(run.untouched());
+
+  // A parameterizer that failed (a fixed pair that is not an edge) gives, once set right, the
+  // bits of a fresh one.
+  Parameterizer reused;
+  reused.set_fixed_pair(Vertex(0), Vertex(200));
+  Mapped_mesh failed(np_test::load_mesh("nefertiti"));
+  failed.parameterize(reused, *halfedges(failed.mesh).begin());
+  ASSERT_EQ(failed.status, SMP::ERROR_WRONG_PARAMETER);
+  reused.set_fixed_pair_from_halfedge();
+  Mapped_mesh again(np_test::load_mesh("nefertiti")), fresh(np_test::load_mesh("nefertiti"));
+  again.parameterize(reused, *halfedges(again.mesh).begin());
+  Parameterizer new_one;
+  fresh.parameterize(new_one, *halfedges(fresh.mesh).begin());
+  ASSERT_EQ(again.status, SMP::OK);
+  for(Vertex v : vertices(again.mesh))
+    EXPECT_EQ(get(again.uv, v), get(fresh.uv, v));
+  EXPECT_EQ(again.report.objective, fresh.report.objective);
+}
+
+TEST(NormPreservingParameterizerErrors, TilingBelowOneByOne)
+{
+  for(const std::array<int, 2>& tiles : {std::array<int, 2>{0, 1}, std::array<int, 2>{2, -1}})
+  {
+    Mapped_mesh run(np_test::tetrahedron());
+    Parameterizer parameterizer;
+    parameterizer.set_tiling(tiles[0], tiles[1]);
+    run.parameterize(parameterizer, *halfedges(run.mesh).begin());
+    EXPECT_EQ(run.status, SMP::ERROR_WRONG_PARAMETER);
+    EXPECT_NE(run.report.message.find("tiling"), std::string::npos);
+    EXPECT_TRUE(run.untouched());
+    np_test::Options options;
+    options.tiles_u = tiles[0];
+    options.tiles_v = tiles[1];
+    np_test::Textured textured(np_test::tetrahedron(), options);
+    EXPECT_EQ(textured.status, SMP::ERROR_WRONG_PARAMETER);
+    EXPECT_TRUE(textured.untouched());
+  }
 }
 
 // The geometry the solver receives: the package's extraction of the first halfedge's component.
@@ -367,6 +443,7 @@ TEST(NormPreservingParameterizer, UsesTheAutomaticOrExplicitFixedPair)
       b = w;
   EXPECT_EQ(automatic.report.fixed_a, std::size_t(a));
   EXPECT_EQ(automatic.report.fixed_b, std::size_t(b));
+  EXPECT_EQ(parameterizer.fixed_vertices(), std::make_pair(a, b));
   EXPECT_EQ(get(automatic.uv, a), Point_2(0, 0));
 
   // The same pair given explicitly gives the same map.

@@ -49,5 +49,35 @@ public:
   Range face(const IndexedMesh& m, std::size_t f) const;
 };
 
+/*!
+\ingroup PkgNormPreservingParameterizationConcepts
+\cgalConcept
+
+Solves the sign-constrained QP of one component (the paper's Eq. 5), given as a
+`Norm_preserving_problem`, for `Norm_preserving_parameterizer_3` and the whole-soup calls.
+The parameterizer solves once, then, with the sign refinement, again with other signs on the
+same geometry and fixed pair, handing every solve the same `State`.
+
+\cgalHasModel `Norm_preserving_ADMM_solver`, `Norm_preserving_QP_solver`
+*/
+class NormPreservingSolver
+{
+public:
+  /// what a solve leaves to the next on the same geometry and fixed pair (a factorization, a
+  /// warm start); default-constructible, empty at the first solve.
+  typedef unspecified_type State;
+
+  /// copy constructor: the parameterizer keeps its own copy.
+  NormPreservingSolver(const NormPreservingSolver&);
+
+  /// solves `problem` from `uv`, a point that satisfies its constraints (the transformed
+  /// guess, or the previous solution), and writes the solution to `uv`, the fixed vertices at
+  /// their targets; fills `report`. Returns `false`, with `report.message` saying why, if
+  /// there is no solution; a solve stopped by a limit returns `true` with the best feasible
+  /// point and says so in `report.status`.
+  bool solve(const Norm_preserving_problem& problem, std::vector<std::array<double, 2> >& uv, State& state,
+             Norm_preserving_solve_report& report) const;
+};
+
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

@@ -41,9 +41,11 @@ namespace Surface_mesh_parameterization {
 /// \tparam TriangleMesh_ a model of `FaceGraph` with an internal `vertex_point` map
 /// \tparam InitialGuess_ a model of `NormPreservingInitialGuess`;
 ///         default `XY_min_max_initial_guess`
-/// \tparam SolverTraits_ `Norm_preserving_ADMM_solver` (the default: fast, to a tolerance) or
-///         a model of `QuadraticProgramTraits`, such as `Interior_point_quadratic_program_traits`
-///         (the exact optimum) or `CGAL::OSQP_quadratic_program_traits`
+/// \tparam SolverTraits_ a model of `NormPreservingSolver`: `Norm_preserving_ADMM_solver` (the
+///         default: fast, to a tolerance) or `Norm_preserving_QP_solver`; or a model of
+///         `QuadraticProgramTraits`, such as `Interior_point_quadratic_program_traits` (the
+///         exact optimum) or `CGAL::OSQP_quadratic_program_traits`, which is wrapped in
+///         `Norm_preserving_QP_solver`
 ///
 /// \cgalModels `Parameterizer_3`
 template <typename TriangleMesh_,
@@ -58,8 +60,11 @@ public:
   typedef TriangleMesh_ TriangleMesh;
   /// the initial-guess type
   typedef typename Default::Get<InitialGuess_, XY_min_max_initial_guess>::type Initial_guess;
-  /// the QP solver type
+  /// the QP solver type, as given
   typedef typename Default::Get<SolverTraits_, Norm_preserving_ADMM_solver>::type Solver_traits;
+  /// the solver that solves: `Solver_traits` if it models `NormPreservingSolver`, otherwise
+  /// `Norm_preserving_QP_solver<Solver_traits>`
+  typedef typename internal::Norm_preserving::Solver_model<Solver_traits>::type Solver;
   /// halfedge handle of the mesh
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
   /// vertex handle of the mesh
@@ -68,7 +73,7 @@ public:
   /// creates a parameterizer with the given initial guess and QP solver.
   explicit Norm_preserving_parameterizer_3(Initial_guess guess = Initial_guess(),
                                            Solver_traits solver = Solver_traits())
-    : m_pipeline(guess, solver)
+    : m_pipeline(guess, Solver(solver))
   { }
 
   /// fixes `source(bhd)` at the origin and `target(bhd)` along the guessed direction (default).
@@ -87,6 +92,7 @@ public:
   /// sets how the solution is fitted into texture space; default `UNIFORM_FIT`.
   void set_texture_fit(Texture_fit fit) { m_pipeline.settings().fit = fit; }
   /// sets the `m x n` tiling: `u` is scaled by `m` and `v` by `n` after the fit; default 1 x 1.
+  /// `parameterize()` returns `ERROR_WRONG_PARAMETER` unless both are at least 1.
   void set_tiling(int m, int n) { m_pipeline.settings().tiles = {m, n}; }
   /// sign refinement (beyond the paper): after the QP, up to `max_rounds` times, takes the
   /// signs from the solution, turning the zero differences the way Eq. 3 decreases, and
@@ -115,10 +121,12 @@ public:
 
   /// the initial guess.
   const Initial_guess& initial_guess() const { return m_pipeline.initial_guess(); }
-  /// the QP solver, as configured (each call solves with a copy of it).
-  Solver_traits& solver_traits() { return m_pipeline.solver_traits(); }
+  /// the solver, as configured.
+  Solver& solver() { return m_pipeline.solver(); }
   /// what the last call of `parameterize()` did.
   const Norm_preserving_report& report() const { return m_report; }
+  /// the vertices that the last successful call of `parameterize()` fixed.
+  std::pair<vertex_descriptor, vertex_descriptor> fixed_vertices() const { return m_fixed; }
 
   /// assigns a uv to every vertex of the connected component of `bhd`, which may be any
   /// halfedge of it, border or not, and marks each in `vpmap`. Faces that share only a vertex
@@ -154,6 +162,8 @@ public:
     if(m_report.status == OK)
       m_report.status = m_pipeline.run(std::move(component.geometry), pair, uv, m_report);
     if(m_report.status == OK)
+      m_fixed = {component.vertices[m_report.fixed_a], component.vertices[m_report.fixed_b]};
+    if(m_report.status == OK)
       for(std::size_t i = 0; i < uv.size(); ++i)
       {
         put(uvmap, component.vertices[i], Point_2(uv[i][0], uv[i][1]));
@@ -187,9 +197,10 @@ private:
     return OK;
   }
 
-  internal::Norm_preserving::Pipeline<Initial_guess, Solver_traits> m_pipeline;
+  internal::Norm_preserving::Pipeline<Initial_guess, Solver> m_pipeline;
   Pair_choice m_pair_choice = Pair_choice::HALFEDGE;
   vertex_descriptor m_a, m_b;
+  std::pair<vertex_descriptor, vertex_descriptor> m_fixed;
   Norm_preserving_report m_report;
 };
 

@@ -41,10 +41,14 @@ struct Norm_preserving_report
 {
   Error_code status = OK;              ///< result of the call
   std::string message;                 ///< readable reason of a failure, empty on success
+  std::string warning;                 ///< what a success should make known (a solver stopped by a limit), else empty
   std::size_t vertices = 0;            ///< vertices of the parameterized component
   std::size_t edges = 0;               ///< edges of the component, one QP residual each
-  std::size_t fixed_a = 0;             ///< component index of the first fixed vertex
-  std::size_t fixed_b = 0;             ///< component index of the second fixed vertex
+  /// the first fixed vertex: its index in the input for the whole-soup calls, in the
+  /// component (in the mesh's vertex order) for the parameterizer, whose `fixed_vertices()`
+  /// gives it as a vertex of the mesh
+  std::size_t fixed_a = 0;
+  std::size_t fixed_b = 0;             ///< the second fixed vertex, likewise
   double initial_objective = 0;        ///< Eq. 4 at the transformed initial guess
   /// Eq. 4 (equal to Eq. 3) at the solution of the QP, after the sign refinement and before
   /// the Euclidean refinement (which minimizes another objective)
@@ -53,7 +57,7 @@ struct Norm_preserving_report
   std::size_t active_constraints = 0;  ///< sign constraints at equality (within 1e-8 mean edge length), at the same point
   std::size_t constraints = 0;         ///< sign constraints, two per edge
   /// how the QP solver ended: on an iteration or time limit the uvs are the best feasible
-  /// point it found, and `message` says so
+  /// point it found, and `warning` says so
   Norm_preserving_solver_status solver_status = SOLVER_FAILED;
   bool has_solver_statistics = false;  ///< whether the solver reported the two fields below
   int solver_iterations = 0;           ///< iterations of the QP solver

@@ -39,7 +39,7 @@ typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Norm_preserv
 /// with the same names and defaults as the parameterizer's setters.
 /// \tparam PolygonMesh the input mesh type
 /// \tparam InitialGuess a model of `NormPreservingInitialGuess`
-/// \tparam SolverTraits a model of `QuadraticProgramTraits`
+/// \tparam SolverTraits a model of `NormPreservingSolver` or of `QuadraticProgramTraits`
 template <typename PolygonMesh,
           typename InitialGuess = XY_min_max_initial_guess,
           typename SolverTraits = Norm_preserving_ADMM_solver>
@@ -139,6 +139,8 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
   Error_code status = NP::check_polygon_soup(points, polygons, message);
   if(status != OK)
     return finish(status, message);
+  if(options.tiles_u < 1 || options.tiles_v < 1)
+    return finish(ERROR_WRONG_PARAMETER, "the tiling must be at least 1 x 1");
 
   const NP::Soup_graph graph = NP::build_soup_graph(points, polygons, options.weld_coincident_vertices);
   r.components = graph.members.size();
@@ -170,7 +172,8 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
 
   // Every component in mesh units (NO_FIT), then one layout and one fit for all.
   std::vector<std::array<double, 2> > uv(points.size(), {0., 0.});
-  NP::Pipeline<InitialGuess, SolverTraits> pipeline(options.initial_guess, options.solver);
+  typedef typename NP::Solver_model<SolverTraits>::type Solver;
+  NP::Pipeline<InitialGuess, Solver> pipeline(options.initial_guess, Solver(options.solver));
   pipeline.settings().fit = NO_FIT;
   pipeline.settings().sign_refinement = {options.sign_refinement_rounds, options.sign_refinement_tolerance};
   pipeline.settings().euclidean_refinement = {options.euclidean_refinement_iterations,
@@ -207,6 +210,8 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
     component_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - component_start).count();
     if(status != OK)
       return finish(status, "component " + std::to_string(c) + ": " + component_report.message);
+    component_report.fixed_a = graph.members[c][component_report.fixed_a]; // the caller's indices
+    component_report.fixed_b = graph.members[c][component_report.fixed_b];
     r.objective += component_report.objective;
     for(std::size_t k = 0; k < component_uv.size(); ++k)
       uv[graph.members[c][k]] = component_uv[k];

@@ -1,4 +1,4 @@
-// Section 4.3 of the paper (DESIGN.md item 7): the depth-first search of the component's
+// Section 4.3 of the paper (doc/decisions.md, 7): the depth-first search of the component's
 // vertex-edge graph, longest edge first, and the decomposition of its tree into the chains
 // along which the graph-based initial guess is interpolated.
 

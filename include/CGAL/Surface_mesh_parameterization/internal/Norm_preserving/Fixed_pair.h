@@ -1,4 +1,4 @@
-// Step 2 of the paper: the fixed adjacent pair (DESIGN.md item 2) and its target positions.
+// Step 2 of the paper: the fixed adjacent pair (doc/decisions.md, 2) and its target positions.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FIXED_PAIR_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FIXED_PAIR_H
@@ -67,7 +67,7 @@ inline std::pair<std::size_t, std::size_t> automatic_fixed_pair(const Norm_prese
   return {a, automatic_partner(geometry, a)};
 }
 
-// Targets (DESIGN.md item 2): `a` at the origin, `b` along the guessed direction from `a` to
+// Targets (doc/decisions.md, 2): `a` at the origin, `b` along the guessed direction from `a` to
 // `b`, at L1 distance (|du| + |dv|) equal to the 3D L1 length of the edge.
 // Returns false if the guess puts `a` and `b` at the same point.
 inline bool fixed_pair_targets(const std::array<double, 2>& guess_a,

@@ -7,15 +7,15 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PIPELINE_H
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
-#include <CGAL/Surface_mesh_parameterization/Norm_preserving_ADMM_solver.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_QP_solver.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_solver.h>
 #include <CGAL/Surface_mesh_parameterization/Texture_fit.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Fixed_pair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_refinement.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Similarity_transform.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Solver_statistics.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Stress_majorization.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Texture_space_fit.h>
 
@@ -23,10 +23,8 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <iterator>
 #include <optional>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -81,14 +79,15 @@ inline std::pair<std::size_t, std::size_t> automatic_pair_of_positive_length(con
   return pair;
 }
 
-template <typename InitialGuess, typename SolverTraits>
+// `Solver` is a model of NormPreservingSolver.
+template <typename InitialGuess, typename Solver>
 class Pipeline
 {
 public:
-  Pipeline(const InitialGuess& guess, const SolverTraits& solver) : m_guess(guess), m_solver(solver) { }
+  Pipeline(const InitialGuess& guess, const Solver& solver) : m_guess(guess), m_solver(solver) { }
 
   const InitialGuess& initial_guess() const { return m_guess; }
-  SolverTraits& solver_traits() { return m_solver; }
+  Solver& solver() { return m_solver; }
   Pipeline_settings& settings() { return m_settings; }
 
   // Maps `geometry` (one connected component with at least one edge) to `uv`, with
@@ -110,8 +109,6 @@ public:
   }
 
 private:
-  static constexpr bool admm = std::is_same<SolverTraits, Norm_preserving_ADMM_solver>::value;
-
   // The state of one run, step by step.
   struct Run
   {
@@ -126,7 +123,7 @@ private:
     std::vector<double> lengths;
     std::array<Fixed_vertex, 2> fixed;
     Edge_signs signs;
-    Admm_state state; // shared by the QP and the refinements (default solver)
+    typename Solver::State state; // what a solve leaves to the next (the refinements' solves)
 
     Run(const Pipeline& p, Norm_preserving_geometry& g, UV_vector& u, Norm_preserving_report& r)
       : pipeline(p), geometry(g), uv(u), report(r)
@@ -144,6 +141,8 @@ private:
       if(s.sign_refinement.max_rounds < 0 || !(s.sign_refinement.tolerance >= 0)
          || s.euclidean_refinement.max_iterations < 0 || !(s.euclidean_refinement.tolerance >= 0))
         return fail(ERROR_WRONG_PARAMETER, "a refinement has a negative iteration limit or tolerance");
+      if(s.tiles[0] < 1 || s.tiles[1] < 1)
+        return fail(ERROR_WRONG_PARAMETER, "the tiling must be at least 1 x 1");
       report.vertices = geometry.points.size();
       report.edges = geometry.edges.size();
       return OK;
@@ -215,9 +214,7 @@ private:
 
     Error_code solve()
     {
-      const Pipeline_settings& s = pipeline.m_settings;
-      const bool refined = s.sign_refinement.max_rounds > 0 || s.euclidean_refinement.max_iterations > 0;
-      Error_code status = solve_qp(signs, uv, refined ? &state : nullptr, nullptr, true);
+      Error_code status = solve_qp(signs, uv, nullptr, true);
       if(status != OK)
         return status;
       timer.lap();
@@ -230,7 +227,7 @@ private:
       if(s.sign_refinement.max_rounds > 0)
       {
         auto round = [&](const Edge_signs& next, const UV_vector& order, UV_vector& candidate) {
-          return solve_qp(next, candidate, &state, &order, false) == OK;
+          return solve_qp(next, candidate, &order, false) == OK;
         };
         const std::vector<double> objectives =
           refine_signs(geometry, lengths, fixed, s.sign_refinement, signs, uv, round);
@@ -264,77 +261,35 @@ private:
       return OK;
     }
 
-    // One QP solve with `signs`. `state`, if given, keeps the default solver's factorization
-    // for the refinements; `order` tells a warm start the values the signs come from. Only the
-    // first solve (`record`) writes the solver's figures into the report.
-    Error_code solve_qp(const Edge_signs& qp_signs, UV_vector& result, Admm_state* warm, const UV_vector* order,
-                        bool record)
+    // One QP solve with `qp_signs` from `result`, which satisfies them; `order` tells a warm
+    // start the values the signs come from. Only the first solve (`record`) writes the
+    // solver's figures into the report.
+    Error_code solve_qp(const Edge_signs& qp_signs, UV_vector& result, const UV_vector* order, bool record)
     {
+      Norm_preserving_solve_report solved;
       if(result.size() == fixed.size()) // an isolated edge: its two ends are the fixed pair
       {
         for(const Fixed_vertex& f : fixed)
           result[f.index] = f.target;
-        if(record)
-          report.solver_status = SOLVER_CONVERGED;
-        return OK;
+        solved.status = SOLVER_CONVERGED;
       }
-      if constexpr(admm)
+      else if(!pipeline.m_solver.solve(Norm_preserving_problem{geometry, lengths, qp_signs, fixed, order}, result,
+                                       state, solved))
+        return record ? fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver failed: " + solved.message)
+                      : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      if(record)
       {
-        SolverTraits solver = pipeline.m_solver;
-        const bool solved = warm ? solver.solve(geometry, lengths, qp_signs, fixed, result, *warm, order)
-                                 : solver.solve(geometry, lengths, qp_signs, fixed, result);
-        const Norm_preserving_ADMM_statistics& statistics = solver.statistics();
-        if(record)
-        {
-          report.has_solver_statistics = true;
-          report.solver_status = statistics.status;
-          report.solver_iterations = statistics.iterations;
-          report.kkt_residual = (std::max)(statistics.primal_residual, statistics.dual_residual);
-          report.message = statistics.message;
-          report.timings.assembly = statistics.assembly_seconds;
-          report.timings.factorization = statistics.factorization_seconds;
-          report.timings.iterations = statistics.iteration_seconds;
-        }
-        if(!solved)
-          return record ? fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver failed: " + statistics.message)
-                        : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-        return OK;
+        report.solver_status = solved.status;
+        report.has_solver_statistics = solved.has_statistics;
+        report.solver_iterations = solved.iterations;
+        report.kkt_residual = solved.kkt_residual;
+        if(solved.status != SOLVER_CONVERGED)
+          report.warning = solved.message;
+        report.timings.assembly = solved.assembly_seconds;
+        report.timings.factorization = solved.factorization_seconds;
+        report.timings.iterations = solved.iteration_seconds;
       }
-      else
-      {
-        (void)warm;
-        (void)order;
-        Lap_timer clock;
-        SolverTraits qp = pipeline.m_solver;
-        assemble_sign_constrained_qp(geometry, lengths, qp_signs, fixed, qp);
-        const double assembly = clock.lap();
-        std::vector<double> x;
-        x.reserve(2 * result.size());
-        const bool solved = qp.solve(std::back_inserter(x));
-        if(record)
-        {
-          report.timings.assembly = assembly;
-          report.timings.iterations = clock.lap();
-          copy_solver_statistics(qp, report);
-        }
-        const bool finite = std::all_of(x.begin(), x.end(), [](double value) { return std::isfinite(value); });
-        if(!solved || x.size() != 2 * result.size() || !finite)
-        {
-          if(!record)
-            return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-          if(solved && x.size() == 2 * result.size())
-            return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver returned a non-finite value");
-          return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver failed" +
-                      (report.message.empty() ? std::string() : ": " + report.message));
-        }
-        for(std::size_t i = 0; i < result.size(); ++i)
-          result[i] = {x[2 * i], x[2 * i + 1]};
-        for(const Fixed_vertex& f : fixed)
-          result[f.index] = f.target;
-        if(record)
-          report.solver_status = SOLVER_CONVERGED;
-        return OK;
-      }
+      return OK;
     }
 
     // Beyond the paper: the Euclidean objective by stress majorization, from the QP solution.
@@ -346,7 +301,7 @@ private:
         return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the Euclidean refinement failed: the solution has no extent");
       const Stress_majorization_result result =
         majorize_stress(geometry, euclidean, held, pipeline.m_settings.euclidean_refinement, uv,
-                        state.factored ? &state.cholesky : nullptr);
+                        factored_laplacian(state));
       report.euclidean_iterations = result.iterations;
       for(double stress : result.stress)
         report.euclidean_stress.push_back(stress * unit * unit);
@@ -358,7 +313,7 @@ private:
   };
 
   InitialGuess m_guess;
-  SolverTraits m_solver;
+  Solver m_solver;
   Pipeline_settings m_settings;
 };
 

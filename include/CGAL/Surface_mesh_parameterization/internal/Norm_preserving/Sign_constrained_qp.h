@@ -10,6 +10,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_QP_H
 
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Fixed_pair.h>
 
 #include <Eigen/Sparse>
@@ -28,7 +29,7 @@ using UV_vector = std::vector<std::array<double, 2> >;
 
 // Sign (+1 or -1) per edge and coordinate: the sign of (w_i - w_j) in the guess, where
 // w is u or v. A tie is oriented as if the vertex of higher index were the larger (-1, as
-// i < j), a deterministic rule (DESIGN.md item 4); the tied guess satisfies it with equality.
+// i < j), a deterministic rule (doc/decisions.md, 4); the tied guess satisfies it with equality.
 using Edge_signs = std::vector<std::array<double, 2> >;
 
 inline Edge_signs edge_signs(const Norm_preserving_geometry& geometry, const UV_vector& guess)
@@ -104,11 +105,7 @@ inline std::pair<double, std::size_t> sign_constraint_extent(const Norm_preservi
   return {lowest, active};
 }
 
-struct Fixed_vertex
-{
-  std::size_t index;
-  std::array<double, 2> target;
-};
+using Fixed_vertex = Norm_preserving_fixed_vertex;
 
 template <typename QuadraticProgramTraits>
 void assemble_sign_constrained_qp(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,

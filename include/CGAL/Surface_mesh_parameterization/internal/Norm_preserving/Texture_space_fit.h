@@ -1,4 +1,4 @@
-// Steps 8-9 of the paper: fitting the solution into texture space (DESIGN.md item 8) and
+// Steps 8-9 of the paper: fitting the solution into texture space (doc/decisions.md, 8) and
 // m x n tiling.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TEXTURE_SPACE_FIT_H

@@ -35,6 +35,17 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
 
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+// METIS draws from a random generator held in a global, seeded at each call: two orderings at
+// once on two threads would interleave its draws and differ from run to run. This lock
+// serializes the analyses of this package only, not other METIS users.
+inline std::mutex& metis_mutex()
+{
+  static std::mutex metis;
+  return metis;
+}
+#endif
+
 class Two_column_cholesky
 {
 public:
@@ -118,11 +129,7 @@ private:
     common.method[0].ordering = CHOLMOD_METIS;
     cholmod_sparse view = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
     {
-      // METIS draws from a random generator held in a global, seeded at each call: two
-      // orderings at once on two threads would interleave its draws and differ from run to
-      // run. The lock serializes the analyses of this package only, not other METIS users.
-      static std::mutex metis;
-      std::lock_guard<std::mutex> lock(metis);
+      std::lock_guard<std::mutex> lock(metis_mutex());
       cholmod.factor = cholmod_analyze(&view, &common);
     }
     cholmod_factor* factor = cholmod.factor;

@@ -1,5 +1,5 @@
 // The interpolating uniform cubic B-spline of the graph-based initial guess (Section 4.3 of
-// the paper, DESIGN.md item 7): the curve f(t), 0 <= t <= 1, through data points D_0..D_{N-1}
+// the paper, doc/decisions.md, 7): the curve f(t), 0 <= t <= 1, through data points D_0..D_{N-1}
 // at the uniform parameters t_k = k / (N - 1).
 //
 // End conditions: not-a-knot (the third derivative is continuous at t_1 and t_{N-2}), so the

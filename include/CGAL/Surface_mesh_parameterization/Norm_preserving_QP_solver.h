@@ -1,0 +1,131 @@
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_QP_SOLVER_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_QP_SOLVER_H
+
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <iterator>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+namespace Norm_preserving {
+
+template <typename T, typename = void>
+struct Has_statistics : std::false_type { };
+template <typename T>
+struct Has_statistics<T, std::void_t<decltype(std::declval<const T&>().statistics())> > : std::true_type { };
+
+} // namespace Norm_preserving
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgNormPreservingParameterization
+/// Solves the sign-constrained QP with any model of CGAL's `QuadraticProgramTraits`, such as
+/// `Interior_point_quadratic_program_traits` (the exact optimum) or
+/// `CGAL::OSQP_quadratic_program_traits`: Eq. 5 is written out as a general QP (variables
+/// `u_i` at `2i`, `v_i` at `2i + 1`) into a copy of the traits object at every solve.
+/// Where the traits object has a `statistics()` member with `iterations`, `primal_residual`,
+/// `dual_residual`, `complementarity` and `message` (as `Interior_point_quadratic_program_traits`
+/// has), the solve report carries them.
+///
+/// `Norm_preserving_parameterizer_3` wraps a `QuadraticProgramTraits` model given as its solver
+/// in this class itself.
+///
+/// \tparam QuadraticProgramTraits a model of `QuadraticProgramTraits`
+/// \cgalModels `NormPreservingSolver`
+template <typename QuadraticProgramTraits>
+class Norm_preserving_QP_solver
+{
+public:
+  /// nothing: every solve starts anew.
+  struct State { };
+
+  /// creates a solver that solves with copies of `qp`.
+  explicit Norm_preserving_QP_solver(const QuadraticProgramTraits& qp = QuadraticProgramTraits()) : m_qp(qp) { }
+
+  /// the traits object, as configured.
+  QuadraticProgramTraits& quadratic_program_traits() { return m_qp; }
+
+  /// solves `problem` and writes the solution to `uv`; returns `false` if the traits' solve
+  /// fails or returns a non-finite value. The start point in `uv` is not used.
+  bool solve(const Norm_preserving_problem& problem, std::vector<std::array<double, 2> >& uv, State&,
+             Norm_preserving_solve_report& report) const
+  {
+    namespace NP = internal::Norm_preserving;
+    typedef std::chrono::steady_clock Clock;
+    report = Norm_preserving_solve_report();
+    Clock::time_point start = Clock::now();
+    QuadraticProgramTraits qp = m_qp;
+    NP::assemble_sign_constrained_qp(problem.geometry, problem.lengths, problem.signs, problem.fixed, qp);
+    report.assembly_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    start = Clock::now();
+    std::vector<double> x;
+    x.reserve(2 * uv.size());
+    const bool solved = qp.solve(std::back_inserter(x));
+    report.iteration_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if constexpr(NP::Has_statistics<QuadraticProgramTraits>::value)
+    {
+      const auto& statistics = qp.statistics();
+      report.has_statistics = true;
+      report.iterations = statistics.iterations;
+      report.kkt_residual = (std::max)({statistics.primal_residual, statistics.dual_residual,
+                                        statistics.complementarity});
+      report.message = statistics.message;
+    }
+    if(!solved || x.size() != 2 * uv.size())
+    {
+      if(report.message.empty())
+        report.message = "no solution";
+      return false;
+    }
+    if(!std::all_of(x.begin(), x.end(), [](double value) { return std::isfinite(value); }))
+    {
+      report.message = "the quadratic program solver returned a non-finite value";
+      return false;
+    }
+    for(std::size_t i = 0; i < uv.size(); ++i)
+      uv[i] = {x[2 * i], x[2 * i + 1]};
+    for(const Norm_preserving_fixed_vertex& f : problem.fixed)
+      uv[f.index] = f.target;
+    report.status = SOLVER_CONVERGED;
+    return true;
+  }
+
+private:
+  QuadraticProgramTraits m_qp;
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+namespace Norm_preserving {
+
+// A model of NormPreservingSolver as it is; a model of QuadraticProgramTraits wrapped.
+template <typename Solver, typename = void>
+struct Solver_model { typedef Norm_preserving_QP_solver<Solver> type; };
+template <typename Solver>
+struct Solver_model<Solver, std::void_t<typename Solver::State> > { typedef Solver type; };
+
+class Two_column_cholesky;
+
+// No factored Laplacian in a state that does not keep one.
+template <typename State>
+const Two_column_cholesky* factored_laplacian(const State&) { return nullptr; }
+
+} // namespace Norm_preserving
+} // namespace internal
+/// \endcond
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
