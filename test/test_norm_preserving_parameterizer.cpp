@@ -43,7 +43,7 @@ double l1(const Point_3& p, const Point_3& q)
   return std::abs(p.x() - q.x()) + std::abs(p.y() - q.y()) + std::abs(p.z() - q.z());
 }
 
-// Eq. 3 recomputed from the written uvs (NO_FIT: mesh units), independently of the solver.
+// Eq. 3 recomputed from the written uvs (NORM_PRESERVING_NO_FIT: mesh units), independently of the solver.
 double eq3(const Mapped_mesh& run)
 {
   double sum = 0;
@@ -75,7 +75,7 @@ TEST_P(RealMesh, SolvesToAFeasibleOptimumWithTheFixedPairInPlace)
 {
   Mapped_mesh run(np_test::load_mesh(GetParam()));
   Parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   const Halfedge h = *halfedges(run.mesh).begin();
   run.parameterize(parameterizer, h);
   ASSERT_EQ(run.status, SMP::OK) << run.report.message;
@@ -91,13 +91,13 @@ TEST_P(RealMesh, SolvesToAFeasibleOptimumWithTheFixedPairInPlace)
 
   // Feasible exactly, hence no better than the optimum, which the exact interior-point
   // solver finds (KKT residual 1e-8); within the default tolerance's 1e-4 of it.
-  EXPECT_EQ(run.report.solver_status, SMP::SOLVER_CONVERGED);
+  EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED);
   EXPECT_EQ(run.report.max_constraint_violation, 0.);
   EXPECT_LE(run.report.objective, run.report.initial_objective);
   EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective);
   Mapped_mesh exact(np_test::load_mesh(GetParam()));
   Exact_parameterizer exact_parameterizer;
-  exact_parameterizer.set_texture_fit(SMP::NO_FIT);
+  exact_parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   exact.parameterize(exact_parameterizer, h);
   ASSERT_EQ(exact.status, SMP::OK) << exact.report.message;
   EXPECT_LT(exact.report.kkt_residual, 1e-8);
@@ -148,7 +148,7 @@ TEST(NormPreservingADMMSolver, ReachesTheOptimumToATightTolerance)
     exact.parameterize(exact_parameterizer, h);
     ASSERT_EQ(run.status, SMP::OK) << name;
     ASSERT_EQ(exact.status, SMP::OK) << name;
-    EXPECT_EQ(run.report.solver_status, SMP::SOLVER_CONVERGED) << name;
+    EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << name;
     EXPECT_EQ(run.report.max_constraint_violation, 0.) << name;
     EXPECT_NEAR(run.report.objective, exact.report.objective, 1e-8 * exact.report.objective) << name;
   }
@@ -160,10 +160,10 @@ TEST(NormPreservingADMMSolver, ReportsTheIterationLimitWithAFeasiblePoint)
   Mapped_mesh run(np_test::load_mesh("camel"));
   SMP::Norm_preserving_parameterizer_3<Mesh> limited(SMP::XY_min_max_initial_guess(),
                                                      SMP::Norm_preserving_ADMM_solver(1e-4, 20));
-  limited.set_texture_fit(SMP::NO_FIT);
+  limited.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   run.parameterize(limited, *halfedges(run.mesh).begin());
   ASSERT_EQ(run.status, SMP::OK) << run.report.message;
-  EXPECT_EQ(run.report.solver_status, SMP::SOLVER_ITERATION_LIMIT);
+  EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_ITERATION_LIMIT);
   EXPECT_EQ(run.report.solver_iterations, 20);
   EXPECT_TRUE(run.report.message.empty()) << run.report.message;
   EXPECT_NE(run.report.warning.find("iteration limit"), std::string::npos);
@@ -179,7 +179,7 @@ TEST(NormPreservingADMMSolver, ReportsTheTimeLimitWithAFeasiblePoint)
                                                      SMP::Norm_preserving_ADMM_solver(1e-9, 20000, 0.));
   run.parameterize(limited, *halfedges(run.mesh).begin());
   ASSERT_EQ(run.status, SMP::OK) << run.report.message;
-  EXPECT_EQ(run.report.solver_status, SMP::SOLVER_TIME_LIMIT);
+  EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_TIME_LIMIT);
   EXPECT_LT(run.report.solver_iterations, 20000);
   EXPECT_NE(run.report.warning.find("time limit"), std::string::npos);
   EXPECT_EQ(run.report.max_constraint_violation, 0.);
@@ -205,7 +205,7 @@ TEST(NormPreservingSolverConcept, AFailedSolveLeavesTheMapUntouchedAndTheParamet
   run.parameterize(failing, *halfedges(run.mesh).begin());
   EXPECT_EQ(run.status, SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM);
   EXPECT_EQ(run.report.message, "the QP solver failed: no factorization");
-  EXPECT_EQ(run.report.solver_status, SMP::SOLVER_FAILED);
+  EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_FAILED);
   EXPECT_TRUE(run.untouched());
 
   // A parameterizer that failed (a fixed pair that is not an edge) gives, once set right, the
@@ -233,6 +233,8 @@ TEST(NormPreservingParameterizerErrors, TilingBelowOneByOne)
     Mapped_mesh run(np_test::tetrahedron());
     Parameterizer parameterizer;
     parameterizer.set_tiling(tiles[0], tiles[1]);
+    EXPECT_EQ(parameterizer.options().tiles_u, tiles[0]);
+    EXPECT_EQ(parameterizer.options().tiles_v, tiles[1]);
     run.parameterize(parameterizer, *halfedges(run.mesh).begin());
     EXPECT_EQ(run.status, SMP::ERROR_WRONG_PARAMETER);
     EXPECT_NE(run.report.message.find("tiling"), std::string::npos);
@@ -397,12 +399,12 @@ TEST(NormPreservingParameterizer, FitsAndTilesTextureSpace)
   Mapped_mesh raw(np_test::load_mesh("cow")), fitted(np_test::load_mesh("cow")), clamped(np_test::load_mesh("cow"));
   const Halfedge h = *halfedges(raw.mesh).begin();
   Parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   raw.parameterize(parameterizer, h);
-  parameterizer.set_texture_fit(SMP::UNIFORM_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_UNIFORM_FIT);
   parameterizer.set_tiling(2, 3);
   fitted.parameterize(parameterizer, h);
-  parameterizer.set_texture_fit(SMP::CLAMP_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_CLAMP_FIT);
   parameterizer.set_tiling(1, 1);
   clamped.parameterize(parameterizer, h);
 
@@ -428,7 +430,7 @@ TEST(NormPreservingParameterizer, UsesTheAutomaticOrExplicitFixedPair)
 {
   Mapped_mesh automatic(np_test::load_mesh("cow")), explicit_pair(np_test::load_mesh("cow"));
   Parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   parameterizer.set_automatic_fixed_pair();
   automatic.parameterize(parameterizer, *halfedges(automatic.mesh).begin());
   ASSERT_EQ(automatic.status, SMP::OK);
@@ -460,7 +462,7 @@ TEST(NormPreservingParameterizer, AutomaticPairSkipsEdgesTheGuessCollapses)
 {
   Mapped_mesh run(np_test::load_mesh("three_peaks"));
   Parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   parameterizer.set_automatic_fixed_pair();
   run.parameterize(parameterizer, *halfedges(run.mesh).begin());
   ASSERT_EQ(run.status, SMP::OK) << run.report.message;
@@ -582,9 +584,9 @@ TEST(NormPreservingParameterizerErrors, FixedPairInAnotherComponent)
 
 TEST(NormPreservingParameterizerErrors, MessagesOfEveryErrorCode)
 {
-  EXPECT_STREQ(SMP::error_message(SMP::ERROR_NO_TOPOLOGICAL_BALL), "Input mesh is not a topological ball");
-  EXPECT_STREQ(SMP::error_message(SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM), "Cannot solve linear system");
-  EXPECT_STREQ(SMP::error_message(SMP::ERROR_WRONG_PARAMETER), "A method received an unexpected parameter");
+  EXPECT_STREQ(SMP::norm_preserving_error_message(SMP::ERROR_NO_TOPOLOGICAL_BALL), "Input mesh is not a topological ball");
+  EXPECT_STREQ(SMP::norm_preserving_error_message(SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM), "Cannot solve linear system");
+  EXPECT_STREQ(SMP::norm_preserving_error_message(SMP::ERROR_WRONG_PARAMETER), "A method received an unexpected parameter");
 }
 
 } // namespace

@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Norm_preserving_QP_solver.h
+/// \ingroup PkgNormPreservingParameterization
+/// The sign-constrained QP solved by any model of `QuadraticProgramTraits`.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_QP_SOLVER_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_QP_SOLVER_H
 
@@ -29,7 +36,7 @@ struct Has_statistics<T, std::void_t<decltype(std::declval<const T&>().statistic
 } // namespace internal
 /// \endcond
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationMethods
 /// Solves the sign-constrained QP with any model of CGAL's `QuadraticProgramTraits`, such as
 /// `Interior_point_quadratic_program_traits` (the exact optimum) or
 /// `CGAL::OSQP_quadratic_program_traits`: Eq. 5 is written out as a general QP (variables
@@ -52,9 +59,6 @@ public:
 
   /// creates a solver that solves with copies of `qp`.
   explicit Norm_preserving_QP_solver(const QuadraticProgramTraits& qp = QuadraticProgramTraits()) : m_qp(qp) { }
-
-  /// the traits object, as configured.
-  QuadraticProgramTraits& quadratic_program_traits() { return m_qp; }
 
   /// solves `problem` and writes the solution to `uv`; returns `false` if the traits' solve
   /// fails or returns a non-finite value. The start point in `uv` is not used.
@@ -97,7 +101,7 @@ public:
       uv[i] = {x[2 * i], x[2 * i + 1]};
     for(const Norm_preserving_fixed_vertex& f : problem.fixed)
       uv[f.index] = f.target;
-    report.status = SOLVER_CONVERGED;
+    report.status = NORM_PRESERVING_SOLVER_CONVERGED;
     return true;
   }
 

@@ -1,10 +1,17 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Norm_preserving_parameterizer_3.h
+/// \ingroup PkgNormPreservingParameterization
+/// The norm-preserving parameterizer, a model of `Parameterizer_3`.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_PARAMETERIZER_3_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_PARAMETERIZER_3_H
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_ADMM_solver.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
-#include <CGAL/Surface_mesh_parameterization/Texture_fit.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_options.h>
 #include <CGAL/Surface_mesh_parameterization/XY_min_max_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Mesh_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Pipeline.h>
@@ -25,7 +32,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationMethods
 /// Norm-preserving texture mapping of Lai & Cheng ("Texture Mapping on Surfaces of Arbitrary
 /// Topology using Norm Preserving based Optimization"): every vertex of a connected triangle
 /// mesh of any topology (disk, closed of any genus, many border loops) gets one uv, with no
@@ -89,11 +96,15 @@ public:
     m_a = a;
     m_b = b;
   }
-  /// sets how the solution is fitted into texture space; default `UNIFORM_FIT`.
-  void set_texture_fit(Texture_fit fit) { m_pipeline.settings().fit = fit; }
+  /// sets how the solution is fitted into texture space; default `NORM_PRESERVING_UNIFORM_FIT`.
+  void set_texture_fit(Texture_fit fit) { m_pipeline.options().texture_fit = fit; }
   /// sets the `m x n` tiling: `u` is scaled by `m` and `v` by `n` after the fit; default 1 x 1.
   /// `parameterize()` returns `ERROR_WRONG_PARAMETER` unless both are at least 1.
-  void set_tiling(int m, int n) { m_pipeline.settings().tiles = {m, n}; }
+  void set_tiling(int m, int n)
+  {
+    m_pipeline.options().tiles_u = m;
+    m_pipeline.options().tiles_v = n;
+  }
   /// sign refinement (beyond the paper): after the QP, up to `max_rounds` times, takes the
   /// signs from the solution, turning the zero differences the way Eq. 3 decreases, and
   /// solves again (warm-started with the default solver); stops when a round lowers Eq. 3 by
@@ -102,7 +113,8 @@ public:
   /// \param tolerance at least 0
   void set_sign_refinement(int max_rounds, double tolerance = 1e-3)
   {
-    m_pipeline.settings().sign_refinement = {max_rounds, tolerance};
+    m_pipeline.options().sign_refinement_rounds = max_rounds;
+    m_pipeline.options().sign_refinement_tolerance = tolerance;
   }
   /// Euclidean refinement (beyond the paper): after the QP (and the sign refinement), minimizes
   /// the Euclidean objective `sum (||P_i - P_j||_2 - ||T_i - T_j||_2)^2` (Eq. 2 with q = 2) from
@@ -116,13 +128,15 @@ public:
   /// \param tolerance at least 0
   void set_euclidean_refinement(int max_iterations, double tolerance = 1e-3)
   {
-    m_pipeline.settings().euclidean_refinement = {max_iterations, tolerance};
+    m_pipeline.options().euclidean_refinement_iterations = max_iterations;
+    m_pipeline.options().euclidean_refinement_tolerance = tolerance;
   }
 
-  /// the initial guess.
-  const Initial_guess& initial_guess() const { return m_pipeline.initial_guess(); }
-  /// the solver, as configured.
-  Solver& solver() { return m_pipeline.solver(); }
+  /// sets every option at once (`weld_coincident_vertices` does not apply to one component).
+  void set_options(const Norm_preserving_options& options) { m_pipeline.options() = options; }
+  /// the options, as the setters left them.
+  const Norm_preserving_options& options() const { return m_pipeline.options(); }
+
   /// what the last call of `parameterize()` did.
   const Norm_preserving_report& report() const { return m_report; }
   /// the vertices that the last successful call of `parameterize()` fixed.

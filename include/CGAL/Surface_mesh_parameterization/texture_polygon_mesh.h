@@ -1,6 +1,14 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file texture_polygon_mesh.h
+/// \ingroup PkgNormPreservingParameterization
+/// Texturing a whole polygon mesh or polygon soup in one call.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_POLYGON_MESH_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_POLYGON_MESH_H
 
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_options.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Component_layout.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Pipeline.h>
@@ -26,47 +34,36 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// The mesh type whose vertex index names a soup vertex in the options of
 /// `texture_polygon_soup()` and `texture_indexed_mesh()`: vertex `i` is `Vertex_index(i)`.
 typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Norm_preserving_triangle_mesh;
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// Options of `texture_polygon_mesh()` and, with `Norm_preserving_triangle_mesh` as
-/// `PolygonMesh`, of `texture_polygon_soup()`.
+/// `PolygonMesh`, of `texture_polygon_soup()` and `texture_indexed_mesh()`: the options shared
+/// with the parameterizer, plus the initial guess, the solver and a fixed pair.
 ///
-/// CGAL 5.5's named parameters cannot be extended outside CGAL, so the options are a struct,
-/// with the same names and defaults as the parameterizer's setters.
+/// CGAL 5.5's named parameters cannot be extended outside CGAL, so the options are a struct.
 /// \tparam PolygonMesh the input mesh type
 /// \tparam InitialGuess a model of `NormPreservingInitialGuess`
 /// \tparam SolverTraits a model of `NormPreservingSolver` or of `QuadraticProgramTraits`
 template <typename PolygonMesh,
           typename InitialGuess = XY_min_max_initial_guess,
           typename SolverTraits = Norm_preserving_ADMM_solver>
-struct Texture_polygon_mesh_options
+struct Texture_polygon_mesh_options : Norm_preserving_options
 {
   /// vertex handle of the input mesh
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
 
   InitialGuess initial_guess = InitialGuess(); ///< the initial guess used on every component
   SolverTraits solver = SolverTraits();        ///< the QP solver (carries its tolerance)
-  Texture_fit texture_fit = UNIFORM_FIT;       ///< fit of the whole layout into texture space
-  int tiles_u = 1;                             ///< `m` of the `m x n` tiling
-  int tiles_v = 1;                             ///< `n` of the `m x n` tiling
-  int sign_refinement_rounds = 0;              ///< `max_rounds` of `set_sign_refinement()`; 0: off
-  double sign_refinement_tolerance = 1e-3;     ///< `tolerance` of `set_sign_refinement()`
-  int euclidean_refinement_iterations = 0;     ///< `max_iterations` of `set_euclidean_refinement()`; 0: off
-  double euclidean_refinement_tolerance = 1e-3; ///< `tolerance` of `set_euclidean_refinement()`
-  /// vertices at exactly the same position (a file split along old uv seams or normals) are
-  /// one vertex for the solve and get the same uv, so the map has no seam there; `false`
-  /// keeps them apart (the pieces they split are then mapped apart)
-  bool weld_coincident_vertices = true;
   /// the fixed pair of the component that contains it (adjacent vertices); every other
   /// component, and all if empty, uses the automatic pair
   std::optional<std::pair<vertex_descriptor, vertex_descriptor> > fixed_pair;
 };
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// What `texture_polygon_mesh()` or `texture_polygon_soup()` did.
 struct Texture_polygon_mesh_report
 {
@@ -82,7 +79,137 @@ struct Texture_polygon_mesh_report
   double seconds = 0;                             ///< wall-clock time of the call
 };
 
-/// \ingroup PkgNormPreservingParameterization
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+namespace Norm_preserving {
+
+// texture_polygon_soup() with its fixed pair, if any, as soup indices.
+template <typename PointRange, typename PolygonRange, typename VertexUVMap, typename InitialGuess, typename SolverTraits>
+Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, VertexUVMap uvmap,
+                        const Norm_preserving_options& options, const InitialGuess& guess, const SolverTraits& solver,
+                        const std::pair<std::size_t, std::size_t>* requested_pair, Texture_polygon_mesh_report* report)
+{
+  typedef typename boost::property_traits<VertexUVMap>::value_type Point_2;
+  namespace NP = internal::Norm_preserving;
+  const std::size_t none = NP::Soup_graph::none;
+
+  const auto start = std::chrono::steady_clock::now();
+  Texture_polygon_mesh_report local_report;
+  Texture_polygon_mesh_report& r = report ? *report : local_report;
+  r = Texture_polygon_mesh_report();
+  auto finish = [&](Error_code status, const std::string& message) {
+    r.status = status;
+    r.message = message;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return status;
+  };
+  std::string message;
+  Error_code status = NP::check_polygon_soup(points, polygons, message);
+  if(status != OK)
+    return finish(status, message);
+  message = NP::invalid_option(options);
+  if(!message.empty())
+    return finish(ERROR_WRONG_PARAMETER, message);
+
+  const NP::Soup_graph graph = NP::build_soup_graph(points, polygons, options.weld_coincident_vertices);
+  r.components = graph.members.size();
+  r.isolated_vertices = graph.unreferenced;
+  r.welded_vertices = graph.welded;
+  r.repeated_corners = graph.repeated_corners;
+
+  // The fixed pair, as representatives, and its component.
+  std::optional<std::pair<std::size_t, std::size_t> > fixed_pair;
+  std::size_t pair_component = none;
+  if(requested_pair)
+  {
+    const std::size_t a = requested_pair->first, b = requested_pair->second;
+    if(a >= points.size() || b >= points.size())
+      return finish(ERROR_WRONG_PARAMETER, "a fixed vertex is not a vertex of the mesh");
+    if(graph.representative[a] == none || graph.representative[b] == none)
+      return finish(ERROR_WRONG_PARAMETER, "a fixed vertex lies on no face");
+    fixed_pair = std::make_pair(graph.representative[a], graph.representative[b]);
+    if(fixed_pair->first == fixed_pair->second && a != b)
+      return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are at the same position, welded into one");
+    pair_component = graph.component[fixed_pair->first];
+    if(graph.component[fixed_pair->second] != pair_component)
+      return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are not in the same connected component");
+    const std::array<std::size_t, 2> edge = {(std::min)(fixed_pair->first, fixed_pair->second),
+                                             (std::max)(fixed_pair->first, fixed_pair->second)};
+    if(!std::binary_search(graph.edges.begin(), graph.edges.end(), edge))
+      return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are not the two ends of an edge");
+  }
+
+  // Every component in mesh units (NORM_PRESERVING_NO_FIT), then one layout and one fit for all.
+  std::vector<std::array<double, 2> > uv(points.size(), {0., 0.});
+  typedef typename NP::Solver_model<SolverTraits>::type Solver;
+  NP::Pipeline<InitialGuess, Solver> pipeline(guess, Solver(solver));
+  pipeline.options() = options;
+  pipeline.options().texture_fit = NORM_PRESERVING_NO_FIT; // the fit and the tiling come after the layout
+  pipeline.options().tiles_u = pipeline.options().tiles_v = 1;
+  const std::vector<std::vector<std::size_t> > edges_of = NP::edges_by_component(graph);
+  std::vector<std::size_t> local(points.size(), none);
+  std::vector<std::array<double, 2> > component_uv;
+  r.reports.resize(r.components);
+  for(std::size_t c = 0; c < r.components; ++c)
+  {
+    const auto component_start = std::chrono::steady_clock::now();
+    Norm_preserving_geometry geometry = NP::component_geometry(graph, c, edges_of, local);
+    Norm_preserving_report& component_report = r.reports[c];
+    std::optional<std::pair<std::size_t, std::size_t> > pair;
+    if(c == pair_component)
+      pair = std::make_pair(local[fixed_pair->first], local[fixed_pair->second]);
+    const bool has_extent = std::any_of(geometry.edges.begin(), geometry.edges.end(), [&](const auto& e) {
+      return geometry.points[e[0]] != geometry.points[e[1]];
+    });
+    if(has_extent)
+      status = pipeline.run(std::move(geometry), pair, component_uv, component_report);
+    else
+    {
+      // Every vertex at one position: the optimum of Eq. 5 is a point.
+      component_report.vertices = geometry.points.size();
+      component_report.edges = geometry.edges.size();
+      component_report.solver_status = NORM_PRESERVING_SOLVER_CONVERGED;
+      component_uv.assign(geometry.points.size(), {0., 0.});
+      ++r.point_components;
+      status = pair && pair->first != pair->second ? ERROR_WRONG_PARAMETER : OK;
+      component_report.message = status == OK ? "" : "the fixed vertices are at the same position";
+    }
+    component_report.status = status;
+    component_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - component_start).count();
+    if(status != OK)
+      return finish(status, "component " + std::to_string(c) + ": " + component_report.message);
+    component_report.fixed_a = graph.members[c][component_report.fixed_a]; // the caller's indices
+    component_report.fixed_b = graph.members[c][component_report.fixed_b];
+    r.objective += component_report.objective;
+    for(std::size_t k = 0; k < component_uv.size(); ++k)
+      uv[graph.members[c][k]] = component_uv[k];
+  }
+  if(r.point_components == r.components)
+    return finish(ERROR_WRONG_PARAMETER, "the mesh has zero extent: every vertex on a face is at the same position");
+
+  NP::lay_out_components(uv, graph.component, r.components);
+  std::vector<std::array<double, 2> > on_faces;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(graph.component[i] != none) on_faces.push_back(uv[i]);
+  NP::fit_to_texture_space(on_faces, options.texture_fit, options.tiles_u, options.tiles_v);
+  std::size_t k = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(graph.component[i] != none)
+      uv[i] = on_faces[k++];
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(graph.representative[i] != none)
+    {
+      const std::array<double, 2>& p = uv[graph.representative[i]];
+      put(uvmap, i, Point_2(p[0], p[1]));
+    }
+  return finish(OK, std::string());
+}
+
+} // namespace Norm_preserving
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgNormPreservingParameterizationFunctions
 /// textures a polygon soup: `points[i]` is vertex `i`, each element of `polygons` lists the
 /// vertex indices of one face. Any soup is accepted as it is: the method needs only the edges
 /// (paper Eq. 4), so faces need not form a manifold, be consistently oriented or orientable.
@@ -121,123 +248,14 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
                                 const Texture_polygon_mesh_options<Norm_preserving_triangle_mesh, InitialGuess, SolverTraits>& options = {},
                                 Texture_polygon_mesh_report* report = nullptr)
 {
-  typedef typename boost::property_traits<VertexUVMap>::value_type Point_2;
-  namespace NP = internal::Norm_preserving;
-  const std::size_t none = NP::Soup_graph::none;
-
-  const auto start = std::chrono::steady_clock::now();
-  Texture_polygon_mesh_report local_report;
-  Texture_polygon_mesh_report& r = report ? *report : local_report;
-  r = Texture_polygon_mesh_report();
-  auto finish = [&](Error_code status, const std::string& message) {
-    r.status = status;
-    r.message = message;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return status;
-  };
-  std::string message;
-  Error_code status = NP::check_polygon_soup(points, polygons, message);
-  if(status != OK)
-    return finish(status, message);
-  if(options.tiles_u < 1 || options.tiles_v < 1)
-    return finish(ERROR_WRONG_PARAMETER, "the tiling must be at least 1 x 1");
-
-  const NP::Soup_graph graph = NP::build_soup_graph(points, polygons, options.weld_coincident_vertices);
-  r.components = graph.members.size();
-  r.isolated_vertices = graph.unreferenced;
-  r.welded_vertices = graph.welded;
-  r.repeated_corners = graph.repeated_corners;
-
-  // The fixed pair, as representatives, and its component.
-  std::optional<std::pair<std::size_t, std::size_t> > fixed_pair;
-  std::size_t pair_component = none;
+  std::pair<std::size_t, std::size_t> pair;
   if(options.fixed_pair)
-  {
-    const std::size_t a = std::size_t(options.fixed_pair->first), b = std::size_t(options.fixed_pair->second);
-    if(a >= points.size() || b >= points.size())
-      return finish(ERROR_WRONG_PARAMETER, "a fixed vertex is not a vertex of the mesh");
-    if(graph.representative[a] == none || graph.representative[b] == none)
-      return finish(ERROR_WRONG_PARAMETER, "a fixed vertex lies on no face");
-    fixed_pair = std::make_pair(graph.representative[a], graph.representative[b]);
-    if(fixed_pair->first == fixed_pair->second && a != b)
-      return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are at the same position, welded into one");
-    pair_component = graph.component[fixed_pair->first];
-    if(graph.component[fixed_pair->second] != pair_component)
-      return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are not in the same connected component");
-    const std::array<std::size_t, 2> edge = {(std::min)(fixed_pair->first, fixed_pair->second),
-                                             (std::max)(fixed_pair->first, fixed_pair->second)};
-    if(!std::binary_search(graph.edges.begin(), graph.edges.end(), edge))
-      return finish(ERROR_WRONG_PARAMETER, "the fixed vertices are not the two ends of an edge");
-  }
-
-  // Every component in mesh units (NO_FIT), then one layout and one fit for all.
-  std::vector<std::array<double, 2> > uv(points.size(), {0., 0.});
-  typedef typename NP::Solver_model<SolverTraits>::type Solver;
-  NP::Pipeline<InitialGuess, Solver> pipeline(options.initial_guess, Solver(options.solver));
-  pipeline.settings().fit = NO_FIT;
-  pipeline.settings().sign_refinement = {options.sign_refinement_rounds, options.sign_refinement_tolerance};
-  pipeline.settings().euclidean_refinement = {options.euclidean_refinement_iterations,
-                                              options.euclidean_refinement_tolerance};
-  const std::vector<std::vector<std::size_t> > edges_of = NP::edges_by_component(graph);
-  std::vector<std::size_t> local(points.size(), none);
-  std::vector<std::array<double, 2> > component_uv;
-  r.reports.resize(r.components);
-  for(std::size_t c = 0; c < r.components; ++c)
-  {
-    const auto component_start = std::chrono::steady_clock::now();
-    Norm_preserving_geometry geometry = NP::component_geometry(graph, c, edges_of, local);
-    Norm_preserving_report& component_report = r.reports[c];
-    std::optional<std::pair<std::size_t, std::size_t> > pair;
-    if(c == pair_component)
-      pair = std::make_pair(local[fixed_pair->first], local[fixed_pair->second]);
-    const bool has_extent = std::any_of(geometry.edges.begin(), geometry.edges.end(), [&](const auto& e) {
-      return geometry.points[e[0]] != geometry.points[e[1]];
-    });
-    if(has_extent)
-      status = pipeline.run(std::move(geometry), pair, component_uv, component_report);
-    else
-    {
-      // Every vertex at one position: the optimum of Eq. 5 is a point.
-      component_report.vertices = geometry.points.size();
-      component_report.edges = geometry.edges.size();
-      component_report.solver_status = SOLVER_CONVERGED;
-      component_uv.assign(geometry.points.size(), {0., 0.});
-      ++r.point_components;
-      status = pair && pair->first != pair->second ? ERROR_WRONG_PARAMETER : OK;
-      component_report.message = status == OK ? "" : "the fixed vertices are at the same position";
-    }
-    component_report.status = status;
-    component_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - component_start).count();
-    if(status != OK)
-      return finish(status, "component " + std::to_string(c) + ": " + component_report.message);
-    component_report.fixed_a = graph.members[c][component_report.fixed_a]; // the caller's indices
-    component_report.fixed_b = graph.members[c][component_report.fixed_b];
-    r.objective += component_report.objective;
-    for(std::size_t k = 0; k < component_uv.size(); ++k)
-      uv[graph.members[c][k]] = component_uv[k];
-  }
-  if(r.point_components == r.components)
-    return finish(ERROR_WRONG_PARAMETER, "the mesh has zero extent: every vertex on a face is at the same position");
-
-  NP::lay_out_components(uv, graph.component, r.components);
-  std::vector<std::array<double, 2> > on_faces;
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(graph.component[i] != none) on_faces.push_back(uv[i]);
-  NP::fit_to_texture_space(on_faces, options.texture_fit, options.tiles_u, options.tiles_v);
-  std::size_t k = 0;
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(graph.component[i] != none)
-      uv[i] = on_faces[k++];
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(graph.representative[i] != none)
-    {
-      const std::array<double, 2>& p = uv[graph.representative[i]];
-      put(uvmap, i, Point_2(p[0], p[1]));
-    }
-  return finish(OK, std::string());
+    pair = {std::size_t(options.fixed_pair->first), std::size_t(options.fixed_pair->second)};
+  return internal::Norm_preserving::texture_soup(points, polygons, uvmap, options, options.initial_guess, options.solver,
+                                                 options.fixed_pair ? &pair : nullptr, report);
 }
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationFunctions
 /// textures a whole polygon mesh: `texture_polygon_soup()` on its faces, vertex `i` being the
 /// `i`-th vertex of `vertices(mesh)`, and the uv of every vertex on a face written into
 /// `uvmap`. Vertices on no face are left as they were. Fails as `texture_polygon_soup()`
@@ -275,22 +293,13 @@ Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
       polygons.back().push_back(get(index_of, v));
   }
 
-  Texture_polygon_mesh_options<TM, InitialGuess, SolverTraits> soup_options;
-  soup_options.initial_guess = options.initial_guess;
-  soup_options.solver = options.solver;
-  soup_options.texture_fit = options.texture_fit;
-  soup_options.tiles_u = options.tiles_u;
-  soup_options.tiles_v = options.tiles_v;
-  soup_options.sign_refinement_rounds = options.sign_refinement_rounds;
-  soup_options.sign_refinement_tolerance = options.sign_refinement_tolerance;
-  soup_options.euclidean_refinement_iterations = options.euclidean_refinement_iterations;
-  soup_options.euclidean_refinement_tolerance = options.euclidean_refinement_tolerance;
-  soup_options.weld_coincident_vertices = options.weld_coincident_vertices;
+  std::pair<std::size_t, std::size_t> pair;
   if(options.fixed_pair)
-    soup_options.fixed_pair = std::make_pair(TM::Vertex_index(TM::size_type(get(index_of, options.fixed_pair->first))),
-                                             TM::Vertex_index(TM::size_type(get(index_of, options.fixed_pair->second))));
-  return texture_polygon_soup(points, polygons, CGAL::bind_property_maps(CGAL::make_property_map(original), uvmap),
-                              soup_options, report);
+    pair = {get(index_of, options.fixed_pair->first), get(index_of, options.fixed_pair->second)};
+  return internal::Norm_preserving::texture_soup(points, polygons,
+                                                 CGAL::bind_property_maps(CGAL::make_property_map(original), uvmap),
+                                                 options, options.initial_guess, options.solver,
+                                                 options.fixed_pair ? &pair : nullptr, report);
 }
 
 } // namespace Surface_mesh_parameterization

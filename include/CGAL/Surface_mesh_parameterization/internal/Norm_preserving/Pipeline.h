@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The method on one connected component given as vertices and edges, shared by the
 // parameterizer (a component of a halfedge mesh) and the whole-soup calls (a component of the
 // edge graph of a polygon soup): normalize, guess, fixed pair + similarity, solve, refine,
@@ -8,10 +11,10 @@
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_options.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_QP_solver.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_solver.h>
-#include <CGAL/Surface_mesh_parameterization/Texture_fit.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Fixed_pair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_refinement.h>
@@ -33,14 +36,16 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
 
-// What the caller sets: the fit, the tiling and the refinements.
-struct Pipeline_settings
+// Why `options` cannot be used, or nothing.
+inline std::string invalid_option(const Norm_preserving_options& options)
 {
-  Texture_fit fit = UNIFORM_FIT;
-  std::array<int, 2> tiles = {1, 1};
-  Sign_refinement_settings sign_refinement = {0, 1e-3};
-  Stress_majorization_settings euclidean_refinement = {0, 1e-3};
-};
+  if(options.sign_refinement_rounds < 0 || !(options.sign_refinement_tolerance >= 0)
+     || options.euclidean_refinement_iterations < 0 || !(options.euclidean_refinement_tolerance >= 0))
+    return "a refinement has a negative iteration limit or tolerance";
+  if(options.tiles_u < 1 || options.tiles_v < 1)
+    return "the tiling must be at least 1 x 1";
+  return std::string();
+}
 
 // Measures the steps: each call returns the seconds since the previous one.
 class Lap_timer
@@ -86,9 +91,8 @@ class Pipeline
 public:
   Pipeline(const InitialGuess& guess, const Solver& solver) : m_guess(guess), m_solver(solver) { }
 
-  const InitialGuess& initial_guess() const { return m_guess; }
-  Solver& solver() { return m_solver; }
-  Pipeline_settings& settings() { return m_settings; }
+  Norm_preserving_options& options() { return m_options; }
+  const Norm_preserving_options& options() const { return m_options; }
 
   // Maps `geometry` (one connected component with at least one edge) to `uv`, with
   // `pair` (component indices, an edge) fixed, or an automatic pair. Fills `report` but for
@@ -137,12 +141,9 @@ private:
 
     Error_code check_settings()
     {
-      const Pipeline_settings& s = pipeline.m_settings;
-      if(s.sign_refinement.max_rounds < 0 || !(s.sign_refinement.tolerance >= 0)
-         || s.euclidean_refinement.max_iterations < 0 || !(s.euclidean_refinement.tolerance >= 0))
-        return fail(ERROR_WRONG_PARAMETER, "a refinement has a negative iteration limit or tolerance");
-      if(s.tiles[0] < 1 || s.tiles[1] < 1)
-        return fail(ERROR_WRONG_PARAMETER, "the tiling must be at least 1 x 1");
+      const std::string invalid = invalid_option(pipeline.m_options);
+      if(!invalid.empty())
+        return fail(ERROR_WRONG_PARAMETER, invalid);
       report.vertices = geometry.points.size();
       report.edges = geometry.edges.size();
       return OK;
@@ -223,14 +224,14 @@ private:
 
     Error_code refine()
     {
-      const Pipeline_settings& s = pipeline.m_settings;
-      if(s.sign_refinement.max_rounds > 0)
+      const Norm_preserving_options& o = pipeline.m_options;
+      if(o.sign_refinement_rounds > 0)
       {
         auto round = [&](const Edge_signs& next, const UV_vector& order, UV_vector& candidate) {
           return solve_qp(next, candidate, &order, false) == OK;
         };
         const std::vector<double> objectives =
-          refine_signs(geometry, lengths, fixed, s.sign_refinement, signs, uv, round);
+          refine_signs(geometry, lengths, fixed, {o.sign_refinement_rounds, o.sign_refinement_tolerance}, signs, uv, round);
         report.sign_refinement_rounds = int(objectives.size()) - 1;
         for(double objective : objectives)
           report.sign_refinement_objectives.push_back(objective * unit * unit);
@@ -241,7 +242,7 @@ private:
       const auto extent = sign_constraint_extent(geometry, signs, uv, 1e-8);
       report.max_constraint_violation = (std::max)(0., -extent.first) * unit;
       report.active_constraints = extent.second;
-      if(s.euclidean_refinement.max_iterations > 0 && geometry.points.size() > fixed.size())
+      if(o.euclidean_refinement_iterations > 0 && geometry.points.size() > fixed.size())
       {
         timer.lap();
         const Error_code status = refine_euclidean();
@@ -256,8 +257,8 @@ private:
       for(auto& p : uv)
         for(int c = 0; c < 2; ++c)
           p[c] *= unit;
-      const Pipeline_settings& s = pipeline.m_settings;
-      fit_to_texture_space(uv, s.fit, s.tiles[0], s.tiles[1]);
+      const Norm_preserving_options& o = pipeline.m_options;
+      fit_to_texture_space(uv, o.texture_fit, o.tiles_u, o.tiles_v);
       return OK;
     }
 
@@ -271,7 +272,7 @@ private:
       {
         for(const Fixed_vertex& f : fixed)
           result[f.index] = f.target;
-        solved.status = SOLVER_CONVERGED;
+        solved.status = NORM_PRESERVING_SOLVER_CONVERGED;
       }
       else if(!pipeline.m_solver.solve(Norm_preserving_problem{geometry, lengths, qp_signs, fixed, order}, result,
                                        state, solved))
@@ -283,7 +284,7 @@ private:
         report.has_solver_statistics = solved.has_statistics;
         report.solver_iterations = solved.iterations;
         report.kkt_residual = solved.kkt_residual;
-        if(solved.status != SOLVER_CONVERGED)
+        if(solved.status != NORM_PRESERVING_SOLVER_CONVERGED)
           report.warning = solved.message;
         report.timings.assembly = solved.assembly_seconds;
         report.timings.factorization = solved.factorization_seconds;
@@ -300,7 +301,8 @@ private:
       if(!euclidean_start(geometry, euclidean, held, uv))
         return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the Euclidean refinement failed: the solution has no extent");
       const Stress_majorization_result result =
-        majorize_stress(geometry, euclidean, held, pipeline.m_settings.euclidean_refinement, uv,
+        majorize_stress(geometry, euclidean, held,
+                        {pipeline.m_options.euclidean_refinement_iterations, pipeline.m_options.euclidean_refinement_tolerance}, uv,
                         factored_laplacian(state));
       report.euclidean_iterations = result.iterations;
       for(double stress : result.stress)
@@ -314,7 +316,7 @@ private:
 
   InitialGuess m_guess;
   Solver m_solver;
-  Pipeline_settings m_settings;
+  Norm_preserving_options m_options;
 };
 
 } // namespace Norm_preserving
