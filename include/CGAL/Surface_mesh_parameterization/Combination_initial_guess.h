@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Combination_initial_guess.h
+/// \ingroup PkgNormPreservingParameterization
+/// The Combination initial guess (Section 4.2 of the paper).
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_COMBINATION_INITIAL_GUESS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_COMBINATION_INITIAL_GUESS_H
 
@@ -18,7 +25,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationMethods
 /// The combination initial guess of Lai & Cheng (Section 4.2), which brings z into the
 /// XY-MinMax guess: the weighted mean of the XY-MinMax guesses (`XY_min_max_initial_guess`,
 /// each in `[0,1]^2`) of copies of the model rotated about several axes and, optionally, with its own
@@ -154,14 +161,8 @@ public:
 private:
   static bool has_xy_extent(const std::vector<std::array<double, 3> >& points)
   {
-    for(int c = 0; c < 2; ++c)
-    {
-      const auto [low, high] = std::minmax_element(points.begin(), points.end(),
-        [c](const std::array<double, 3>& p, const std::array<double, 3>& q) { return p[c] < q[c]; });
-      if(!((*high)[c] > (*low)[c]))
-        return false;
-    }
-    return true;
+    const auto [low, high] = internal::Norm_preserving::coordinate_bounds(points);
+    return high[0] > low[0] && high[1] > low[1];
   }
 
   typedef std::array<std::array<double, 3>, 3> Matrix_3;

@@ -1,8 +1,16 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file XY_min_max_initial_guess.h
+/// \ingroup PkgNormPreservingParameterization
+/// The XY-MinMax initial guess (Section 4.1 of the paper).
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_XY_MIN_MAX_INITIAL_GUESS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_XY_MIN_MAX_INITIAL_GUESS_H
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Geometry.h>
 
 #include <algorithm>
 #include <array>
@@ -12,7 +20,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationMethods
 /// The XY-MinMax initial guess of Lai & Cheng (Section 4.1): each vertex is guessed at
 /// `((x - Xmin) / (Xmax - Xmin), (y - Ymin) / (Ymax - Ymin))`.
 ///
@@ -37,13 +45,7 @@ public:
       message = "no vertex to guess";
       return ERROR_EMPTY_MESH;
     }
-    std::array<double, 3> low = points[0], high = low;
-    for(const auto& p : points)
-      for(int c = 0; c < 3; ++c)
-      {
-        low[c] = (std::min)(low[c], p[c]);
-        high[c] = (std::max)(high[c], p[c]);
-      }
+    const auto [low, high] = internal::Norm_preserving::coordinate_bounds(points);
     // A component flat in x or y is seen in its own plane: z stands in for that axis.
     std::array<int, 2> axis = {0, 1};
     for(int c = 0; c < 2; ++c)

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Section 4.3 of the paper (doc/decisions.md, 7): the depth-first search of the component's
 // vertex-edge graph, longest edge first, and the decomposition of its tree into the chains
 // along which the graph-based initial guess is interpolated.
@@ -6,6 +9,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_DFS_CHAINS_H
 
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Geometry.h>
 
 #include <CGAL/assertions.h>
 
@@ -172,10 +176,7 @@ inline Dfs_chains dfs_chains(const Norm_preserving_geometry& geometry)
   result.parent.resize(n);
   for(std::size_t i = 0; i < n; ++i)
     result.parent[i] = i;
-  const std::size_t root = std::size_t(
-    std::min_element(points.begin(), points.end(),
-                     [](const std::array<double, 3>& p, const std::array<double, 3>& q) { return p[0] < q[0]; }) -
-    points.begin());
+  const std::size_t root = lowest_x_vertex(points);
 
   const Longest_first_graph graph = longest_first_graph(geometry);
   Chain_recorder::State state(n);

@@ -1,9 +1,13 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Step 2 of the paper: the fixed adjacent pair (doc/decisions.md, 2) and its target positions.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FIXED_PAIR_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FIXED_PAIR_H
 
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Geometry.h>
 
 #include <algorithm>
 #include <array>
@@ -16,16 +20,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
-
-inline double l1_distance(const std::array<double, 3>& p, const std::array<double, 3>& q)
-{
-  return std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]);
-}
-
-inline double l2_distance(const std::array<double, 3>& p, const std::array<double, 3>& q)
-{
-  return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-}
 
 inline bool is_edge(const Norm_preserving_geometry& geometry, std::size_t a, std::size_t b)
 {
@@ -60,10 +54,7 @@ inline std::size_t automatic_partner(const Norm_preserving_geometry& geometry, s
 // guess. The component has at least one edge.
 inline std::pair<std::size_t, std::size_t> automatic_fixed_pair(const Norm_preserving_geometry& geometry)
 {
-  const auto& points = geometry.points;
-  std::size_t a = 0;
-  for(std::size_t i = 1; i < points.size(); ++i)
-    if(points[i][0] < points[a][0]) a = i;
+  const std::size_t a = lowest_x_vertex(geometry.points);
   return {a, automatic_partner(geometry, a)};
 }
 

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The cut graph of `cut_to_disk()` by tree-cotree: a shortest-path tree T of the component's
 // vertex-edge graph, a spanning tree C of its dual graph that avoids T (the greedy cotree of
 // Erickson and Whittlesey, "Greedy optimal homotopy and homology generators", SODA 2005), and
@@ -10,6 +13,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TREE_COTREE_CUT_H
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Geometry.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -101,9 +105,7 @@ index_surface(const TriangleMesh& mesh,
     const auto& p = get(ppmap, v);
     points.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
   }
-  for(std::size_t i = 1; i < points.size(); ++i)
-    if(points[i][0] < points[surface.root][0])
-      surface.root = i;
+  surface.root = lowest_x_vertex(points);
 
   // Each edge once: from its halfedge of lower source index, or from its only halfedge with a face.
   for(face_descriptor f : faces)
@@ -113,9 +115,7 @@ index_surface(const TriangleMesh& mesh,
       const face_descriptor g = face(opposite(h, mesh), mesh);
       if(g != GT::null_face() && i > j)
         continue;
-      const double length = std::sqrt(CGAL::square(points[i][0] - points[j][0]) +
-                                       CGAL::square(points[i][1] - points[j][1]) +
-                                       CGAL::square(points[i][2] - points[j][2]));
+      const double length = l2_distance(points[i], points[j]);
       surface.edges.push_back({{(std::min)(i, j), (std::max)(i, j)},
                                {get(face_index, f), g == GT::null_face() ? no_index : get(face_index, g)},
                                h, length});
