@@ -183,7 +183,7 @@ Measurement measure_ours(Mesh& mesh, int runs, int sign_rounds = 0, int euclidea
   auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv").first;
   SMP::Texture_polygon_mesh_options<Mesh, InitialGuess, Solver> options;
   options.solver = solver;
-  options.texture_fit = SMP::NO_FIT;
+  options.texture_fit = SMP::NORM_PRESERVING_NO_FIT;
   options.sign_refinement_rounds = sign_rounds;
   options.euclidean_refinement_iterations = euclidean_iterations;
   Measurement m;
@@ -230,7 +230,7 @@ Measurement measure_on_disk(Mesh& mesh, const Topology& topology, int runs, Para
   np_benchmark::reset_peak_memory();
   m.seconds = median_seconds(runs, [&] {
     const SMP::Error_code status = parameterize(seam_mesh, border, uv, index, done);
-    return status == SMP::OK ? std::string() : std::string(SMP::error_message(status));
+    return status == SMP::OK ? std::string() : std::string(SMP::norm_preserving_error_message(status));
   });
   m.peak_mib = np_benchmark::peak_memory_mib();
   // The parameterizers mark only the vertices they fixed; every vertex of the disk has a uv.

@@ -37,7 +37,7 @@ int main(int argc, char** argv)
     parameterizer.parameterize(mesh, *halfedges(mesh).begin(), uvmap, get(CGAL::vertex_index, mesh), has_uv);
   if(status != SMP::OK)
   {
-    std::cerr << "error: " << SMP::error_message(status) << ": " << parameterizer.report().message << '\n';
+    std::cerr << "error: " << SMP::norm_preserving_error_message(status) << ": " << parameterizer.report().message << '\n';
     return 1;
   }
 

@@ -133,7 +133,7 @@ Textured_faces texture_on_disk(Mesh& mesh, Parameterizer parameterizer, const st
   std::vector<std::array<double, 2> > fitted;
   for(seam_vertex v : order)
     fitted.push_back({get(uv, v).x(), get(uv, v).y()});
-  SMP::internal::Norm_preserving::fit_to_texture_space(fitted, SMP::UNIFORM_FIT, 1, 1);
+  SMP::internal::Norm_preserving::fit_to_texture_space(fitted, SMP::NORM_PRESERVING_UNIFORM_FIT, 1, 1);
   for(std::size_t k = 0; k < order.size(); ++k)
   {
     put(uv, order[k], Point_2(fitted[k][0], fitted[k][1]));

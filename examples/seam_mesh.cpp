@@ -49,7 +49,7 @@ int main(int argc, char** argv)
     SMP::parameterize(seam_mesh, SMP::Norm_preserving_parameterizer_3<Seam_mesh>(), cut.border_halfedge, uvmap);
   if(status != SMP::OK)
   {
-    std::cerr << "error: " << SMP::error_message(status) << '\n';
+    std::cerr << "error: " << SMP::norm_preserving_error_message(status) << '\n';
     return 1;
   }
   std::size_t mapped = 0;

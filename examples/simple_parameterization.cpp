@@ -39,7 +39,7 @@ int main(int argc, char** argv)
   const SMP::Error_code status = SMP::parameterize(mesh, SMP::Norm_preserving_parameterizer_3<Mesh>(), bhd, uvmap);
   if(status != SMP::OK)
   {
-    std::cerr << "error: " << SMP::error_message(status) << '\n';
+    std::cerr << "error: " << SMP::norm_preserving_error_message(status) << '\n';
     return 1;
   }
 

@@ -80,7 +80,7 @@ struct Settings
   std::string input = std::string(NP_MESH_DIR) + "/cow.off";
   std::string output = "cow_textured";
   std::string guess = "xy";
-  SMP::Texture_fit fit = SMP::UNIFORM_FIT;
+  SMP::Texture_fit fit = SMP::NORM_PRESERVING_UNIFORM_FIT;
   int tiles_u = 1, tiles_v = 1;
   std::optional<std::pair<std::size_t, std::size_t> > fixed_pair;
   bool weld = true;
@@ -116,9 +116,9 @@ std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
     else if(arg == "--fit")
     {
       const auto v = value();
-      if(v && *v == "uniform") s.fit = SMP::UNIFORM_FIT;
-      else if(v && *v == "clamp") s.fit = SMP::CLAMP_FIT;
-      else if(v && *v == "none") s.fit = SMP::NO_FIT;
+      if(v && *v == "uniform") s.fit = SMP::NORM_PRESERVING_UNIFORM_FIT;
+      else if(v && *v == "clamp") s.fit = SMP::NORM_PRESERVING_CLAMP_FIT;
+      else if(v && *v == "none") s.fit = SMP::NORM_PRESERVING_NO_FIT;
       else return "--fit takes uniform, clamp or none";
     }
     else if(arg == "--tiles")
@@ -290,7 +290,7 @@ int main(int argc, char** argv)
   });
   if(status != SMP::OK)
   {
-    std::cerr << "error: " << SMP::error_message(status) << ": " << report.message << '\n';
+    std::cerr << "error: " << SMP::norm_preserving_error_message(status) << ": " << report.message << '\n';
     return 1;
   }
   std::vector<char> has_uv(uv.size());

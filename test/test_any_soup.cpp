@@ -294,7 +294,7 @@ TEST_P(SoupDefect, SmallIsTexturedAtTheOptimumAndDeterministically)
   EXPECT_GE(t.report.objective, exact.report.objective * (1 - 1e-9) - 1e-12);
   EXPECT_LE(t.report.objective, exact.report.objective * (1 + 1e-4) + 1e-12);
   Textured_soup::Soup_options unfitted;
-  unfitted.texture_fit = SMP::NO_FIT;
+  unfitted.texture_fit = SMP::NORM_PRESERVING_NO_FIT;
   Textured_soup mesh_units(soup.points, soup.polygons, unfitted);
   ASSERT_EQ(mesh_units.status, SMP::OK);
   EXPECT_NEAR(recomputed_objective(soup, mesh_units.uv), mesh_units.report.objective,

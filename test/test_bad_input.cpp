@@ -135,7 +135,7 @@ TEST(BadInput, SingleTriangleIsLaidOutWithItsL1Lengths)
   // Each L1 edge length is reachable in the plane with the signs of the XY-MinMax guess.
   Mapped_mesh run(mesh_of({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0)}, {{0, 1, 2}}));
   Parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   run.parameterize(parameterizer, first_halfedge(run.mesh));
   expect_solved(run);
   EXPECT_NEAR(run.report.objective, 0., 1e-12);
@@ -219,7 +219,7 @@ TEST(BadInput, ZeroLengthEdgeAndZeroAreaFacesAreSolved)
                                    {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}});
   Mapped_mesh duplicate(tetrahedron);
   Parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   parameterizer.set_automatic_fixed_pair();
   duplicate.parameterize(parameterizer, first_halfedge(duplicate.mesh));
   expect_solved(duplicate);
@@ -277,7 +277,7 @@ void expect_scaled(const Mapped_mesh& reference, const Mapped_mesh& run, double 
 TEST(BadInput, TinyAndHugeCoordinatesScaleTheResult)
 {
   Parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   // Scaled by 2^-40 ~ 1e-12 and 2^40 ~ 1e12, rounding-free: the very same map, scaled,
   // even on a mesh whose symmetries make exact ties in the guess.
   const Mesh sphere = np_test::icosphere();
@@ -318,7 +318,7 @@ TEST(BadInput, CollinearVertices)
   const Polygons strip = {{0, 1, 2}, {0, 2, 3}};
   Mapped_mesh on_x(mesh_of({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(2, 0, 0), Point_3(3, 0, 0)}, strip));
   Parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   on_x.parameterize(parameterizer, first_halfedge(on_x.mesh));
   expect_solved(on_x);
   EXPECT_NEAR(on_x.report.objective, 0., 1e-12);

@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Combination_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Graph_based_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/Interior_point_quadratic_program_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/XY_min_max_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Dfs_chains.h>
@@ -598,7 +599,7 @@ void expect_parameterizes_and_improves_on_the_guess(const std::string& name)
     auto uv = mesh.add_property_map<Vertex, np_test::Point_2>("v:uv").first;
     auto marked = mesh.add_property_map<Vertex, bool>("v:marked", false).first;
     Parameterizer parameterizer;
-    parameterizer.set_texture_fit(SMP::NO_FIT);
+    parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
     const SMP::Error_code status =
       parameterizer.parameterize(mesh, *halfedges(mesh).begin(), uv, get(CGAL::vertex_index, mesh), marked);
     ASSERT_EQ(status, SMP::OK) << name << ": " << parameterizer.report().message;
@@ -612,6 +613,31 @@ void expect_parameterizes_and_improves_on_the_guess(const std::string& name)
   }
   EXPECT_TRUE(runs[0] == runs[1]) << name << ": two runs differ";
 }
+
+// The solution, not the guess: the default solver within 1e-4 of the exact (interior-point)
+// optimum, with the same guess and signs (eight: genus 2, small enough for the exact solver).
+template <typename Guess>
+void expect_the_exact_optimum(const std::string& name)
+{
+  auto objective = [&name](auto parameterizer) {
+    Mesh mesh = np_test::load_mesh(name);
+    auto uv = mesh.add_property_map<Mesh::Vertex_index, np_test::Point_2>("v:uv").first;
+    auto marked = mesh.add_property_map<Mesh::Vertex_index, bool>("v:marked", false).first;
+    const SMP::Error_code status =
+      parameterizer.parameterize(mesh, *halfedges(mesh).begin(), uv, get(CGAL::vertex_index, mesh), marked);
+    EXPECT_EQ(status, SMP::OK) << name << ": " << parameterizer.report().message;
+    return parameterizer.report().objective;
+  };
+  const double admm = objective(SMP::Norm_preserving_parameterizer_3<Mesh, Guess>());
+  const double exact =
+    objective(SMP::Norm_preserving_parameterizer_3<Mesh, Guess, SMP::Interior_point_quadratic_program_traits<> >());
+  EXPECT_GE(admm, exact * (1 - 1e-9)) << name;
+  EXPECT_LE(admm, exact * (1 + 1e-4)) << name;
+}
+
+TEST(GraphBasedGuess, DefaultSolverReachesTheExactOptimum) { expect_the_exact_optimum<SMP::Graph_based_initial_guess>("eight"); }
+
+TEST(CombinationGuess, DefaultSolverReachesTheExactOptimum) { expect_the_exact_optimum<SMP::Combination_initial_guess>("eight"); }
 
 TEST(GraphBasedGuess, ParameterizerSolvesCowAndKnot1)
 {

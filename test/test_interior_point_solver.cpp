@@ -179,7 +179,7 @@ double solved_objective(Mesh mesh, Parameterizer& parameterizer)
 {
   auto uv = mesh.add_property_map<Mesh::Vertex_index, np_test::Point_2>("v:uv").first;
   auto marked = mesh.add_property_map<Mesh::Vertex_index, bool>("v:marked", false).first;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   const SMP::Error_code status =
     parameterizer.parameterize(mesh, *halfedges(mesh).begin(), uv, get(CGAL::vertex_index, mesh), marked);
   EXPECT_EQ(status, SMP::OK) << parameterizer.report().message;

@@ -36,7 +36,7 @@ double l1(const Point_3& p, const Point_3& q)
 double l2(const Point_3& p, const Point_3& q) { return std::sqrt(CGAL::squared_distance(p, q)); }
 double l2(const Point_2& p, const Point_2& q) { return std::sqrt(CGAL::squared_distance(p, q)); }
 
-// Eq. 3 from the written uvs (NO_FIT: mesh units).
+// Eq. 3 from the written uvs (NORM_PRESERVING_NO_FIT: mesh units).
 double eq3(const Mapped_mesh& run)
 {
   double sum = 0;
@@ -123,7 +123,7 @@ Mapped_mesh run(const Mesh& mesh, int sign_rounds, int euclidean_iterations,
 {
   Mapped_mesh mapped(mesh);
   Parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   parameterizer.set_sign_refinement(sign_rounds);
   parameterizer.set_euclidean_refinement(euclidean_iterations, euclidean_tolerance);
   mapped.parameterize(parameterizer, *halfedges(mapped.mesh).begin());
@@ -190,7 +190,7 @@ TEST(SignRefinementExact, NeverIncreasesEq3WithTheInteriorPointSolver)
 {
   Mapped_mesh mapped(np_test::load_mesh("nefertiti"));
   Exact_parameterizer parameterizer;
-  parameterizer.set_texture_fit(SMP::NO_FIT);
+  parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   parameterizer.set_sign_refinement(4, 0.);
   mapped.parameterize(parameterizer, *halfedges(mapped.mesh).begin());
   ASSERT_EQ(mapped.status, SMP::OK) << mapped.report.message;
@@ -296,7 +296,7 @@ TEST(EuclideanRefinementStart, ALooseQPLeadsToTheSameStress)
     const Mapped_mesh tight = run(mesh, 0, 1000, 1e-3);
     Mapped_mesh loose(mesh);
     Parameterizer parameterizer(SMP::XY_min_max_initial_guess(), SMP::Norm_preserving_ADMM_solver(1e-2));
-    parameterizer.set_texture_fit(SMP::NO_FIT);
+    parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
     parameterizer.set_euclidean_refinement(1000);
     loose.parameterize(parameterizer, *halfedges(loose.mesh).begin());
     ASSERT_EQ(loose.status, SMP::OK) << loose.report.message;

@@ -74,7 +74,7 @@ INSTANTIATE_TEST_SUITE_P(Suite, PolygonMesh,
 TEST(TexturePolygonMesh, KeepsEachComponentAtTheCommonScale)
 {
   Options options;
-  options.texture_fit = SMP::NO_FIT;
+  options.texture_fit = SMP::NORM_PRESERVING_NO_FIT;
   Textured whole(np_test::load_mesh("knot2"), options);
   ASSERT_EQ(whole.status, SMP::OK);
   ASSERT_EQ(whole.report.components, 2u);
@@ -88,7 +88,7 @@ TEST(TexturePolygonMesh, KeepsEachComponentAtTheCommonScale)
     auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv" + std::to_string(c)).first;
     auto done = mesh.add_property_map<Vertex, bool>("v:done" + std::to_string(c), false).first;
     SMP::Norm_preserving_parameterizer_3<Mesh> alone;
-    alone.set_texture_fit(SMP::NO_FIT);
+    alone.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
     alone.set_automatic_fixed_pair();
     Mesh::Face_index seed;
     for(auto f : faces(mesh)) if(get(id, f) == c) { seed = f; break; }
@@ -131,7 +131,7 @@ TEST(TexturePolygonMesh, NormPreservesTheExplicitFixedEdge)
   Mesh mesh = np_test::load_mesh("torus_quad");
   const auto h = *halfedges(mesh).begin();
   Options options;
-  options.texture_fit = SMP::NO_FIT;
+  options.texture_fit = SMP::NORM_PRESERVING_NO_FIT;
   options.fixed_pair = std::make_pair(source(h, mesh), target(h, mesh));
   Textured t(mesh, options);
   ASSERT_EQ(t.status, SMP::OK) << t.report.message;

@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Graph_based_initial_guess.h
+/// \ingroup PkgNormPreservingParameterization
+/// The Graph-based initial guess (Section 4.3 of the paper).
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_GRAPH_BASED_INITIAL_GUESS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_GRAPH_BASED_INITIAL_GUESS_H
 
@@ -16,7 +23,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationMethods
 /// The graph-based initial guess of Lai & Cheng (Section 4.3), which takes the edge lengths,
 /// hence z, into account and suits surfaces with many handles.
 ///

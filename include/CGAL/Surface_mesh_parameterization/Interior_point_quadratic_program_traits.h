@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Interior_point_quadratic_program_traits.h
+/// \ingroup PkgNormPreservingParameterization
+/// An exact interior-point solver, a model of `QuadraticProgramTraits`.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERIOR_POINT_QUADRATIC_PROGRAM_TRAITS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERIOR_POINT_QUADRATIC_PROGRAM_TRAITS_H
 
@@ -16,7 +23,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// Statistics of the last `Interior_point_quadratic_program_traits::solve()` call.
 struct Interior_point_statistics
 {
@@ -28,12 +35,12 @@ struct Interior_point_statistics
   std::string message;        ///< why `solve()` returned `false`, empty on success
 };
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationMethods
 /// Sparse primal-dual interior-point solver for convex quadratic programs
 /// `min 1/2 x'Px + q'x + r  s.t.  l <= Ax <= u`.
 ///
-/// It is the default solver of `Norm_preserving_parameterizer_3` and can replace
-/// `CGAL::OSQP_quadratic_program_traits` anywhere. It reaches the optimum to a relative
+/// The exact solver of `Norm_preserving_parameterizer_3` (through `Norm_preserving_QP_solver`),
+/// and a replacement for `CGAL::OSQP_quadratic_program_traits` anywhere. It reaches the optimum to a relative
 /// tolerance (default 1e-10) on residuals and duality gap; where the optimum is not unique it
 /// returns (to tolerance) the analytic centre of the optimal set, a deterministic choice.
 ///

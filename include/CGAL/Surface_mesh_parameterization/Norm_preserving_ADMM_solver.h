@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Norm_preserving_ADMM_solver.h
+/// \ingroup PkgNormPreservingParameterization
+/// The default solver of the sign-constrained QP.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_ADMM_SOLVER_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_ADMM_SOLVER_H
 
@@ -13,7 +20,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationMethods
 /// The default solver of `Norm_preserving_parameterizer_3`: solves the sign-constrained QP
 /// (the paper's Eq. 5) by the alternating direction method of multipliers, split so that the
 /// only linear system is the mesh's graph Laplacian, factored once (CHOLMOD when the package
@@ -65,13 +72,13 @@ public:
     report.iteration_seconds = result.iteration_seconds;
     switch(result.outcome)
     {
-      case NP::Admm_outcome::CONVERGED: report.status = SOLVER_CONVERGED; break;
+      case NP::Admm_outcome::CONVERGED: report.status = NORM_PRESERVING_SOLVER_CONVERGED; break;
       case NP::Admm_outcome::ITERATION_LIMIT:
-        report.status = SOLVER_ITERATION_LIMIT;
+        report.status = NORM_PRESERVING_SOLVER_ITERATION_LIMIT;
         report.message = "iteration limit reached before the tolerance";
         break;
       case NP::Admm_outcome::TIME_LIMIT:
-        report.status = SOLVER_TIME_LIMIT;
+        report.status = NORM_PRESERVING_SOLVER_TIME_LIMIT;
         report.message = "time limit reached before the tolerance";
         break;
       case NP::Admm_outcome::FACTORIZATION_FAILED:

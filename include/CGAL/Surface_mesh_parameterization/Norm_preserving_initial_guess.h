@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Norm_preserving_initial_guess.h
+/// \ingroup PkgNormPreservingParameterization
+/// The component handed to an initial guess.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_INITIAL_GUESS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_INITIAL_GUESS_H
 
@@ -8,7 +15,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// The connected component handed to an initial guess: vertex positions, indexed
 /// `0..n-1` in the mesh's vertex order, and every edge once as `{i, j}` with `i < j`,
 /// sorted.

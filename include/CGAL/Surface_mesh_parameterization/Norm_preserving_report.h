@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Norm_preserving_report.h
+/// \ingroup PkgNormPreservingParameterization
+/// What a call of the parameterizer did, and the messages of the error codes.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_REPORT_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_REPORT_H
 
@@ -10,17 +17,17 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationEnums
 /// How a solver of `Norm_preserving_parameterizer_3` ended.
 enum Norm_preserving_solver_status
 {
-  SOLVER_CONVERGED,       ///< the tolerance was met
-  SOLVER_ITERATION_LIMIT, ///< the iteration limit was hit: the best feasible point found is returned
-  SOLVER_TIME_LIMIT,      ///< the time limit was hit: the best feasible point found is returned
-  SOLVER_FAILED           ///< no solution (the uv map is left untouched)
+  NORM_PRESERVING_SOLVER_CONVERGED,       ///< the tolerance was met
+  NORM_PRESERVING_SOLVER_ITERATION_LIMIT, ///< the iteration limit was hit: the best feasible point found is returned
+  NORM_PRESERVING_SOLVER_TIME_LIMIT,      ///< the time limit was hit: the best feasible point found is returned
+  NORM_PRESERVING_SOLVER_FAILED           ///< no solution (the uv map is left untouched)
 };
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// Where the time of one `Norm_preserving_parameterizer_3::parameterize()` call went, in seconds.
 struct Norm_preserving_timings
 {
@@ -34,7 +41,7 @@ struct Norm_preserving_timings
   double write_back = 0;    ///< the rest: the final objective, the fit into texture space, the uv map
 };
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// What the last call of `Norm_preserving_parameterizer_3::parameterize()` did.
 /// Lengths are in mesh units; objectives are the plain sum of Eq. 4 (no 1/2 factor).
 struct Norm_preserving_report
@@ -58,7 +65,7 @@ struct Norm_preserving_report
   std::size_t constraints = 0;         ///< sign constraints, two per edge
   /// how the QP solver ended: on an iteration or time limit the uvs are the best feasible
   /// point it found, and `warning` says so
-  Norm_preserving_solver_status solver_status = SOLVER_FAILED;
+  Norm_preserving_solver_status solver_status = NORM_PRESERVING_SOLVER_FAILED;
   bool has_solver_statistics = false;  ///< whether the solver reported the two fields below
   int solver_iterations = 0;           ///< iterations of the QP solver
   double kkt_residual = 0;             ///< largest residual the solver reports on the normalized QP (edge lengths ~ 1)
@@ -75,10 +82,10 @@ struct Norm_preserving_report
   Norm_preserving_timings timings;     ///< the same time, step by step
 };
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationFunctions
 /// The message of each `Error_code` (CGAL 5.5's `get_error_message()` is off by one from
 /// `ERROR_NO_TOPOLOGICAL_BALL` on).
-inline const char* error_message(Error_code code)
+inline const char* norm_preserving_error_message(Error_code code)
 {
   switch(code)
   {

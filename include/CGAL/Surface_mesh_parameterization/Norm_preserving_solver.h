@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Norm_preserving_solver.h
+/// \ingroup PkgNormPreservingParameterization
+/// The problem and the report of a model of `NormPreservingSolver`.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_SOLVER_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_SOLVER_H
 
@@ -12,7 +19,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// A vertex held at `target` by the sign-constrained QP.
 struct Norm_preserving_fixed_vertex
 {
@@ -20,7 +27,7 @@ struct Norm_preserving_fixed_vertex
   std::array<double, 2> target;  ///< its uv
 };
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// The sign-constrained QP of one component (the paper's Eq. 5), as handed to a model of
 /// `NormPreservingSolver`: minimize `sum_e (lengths[e] - su_e (u_i - u_j) - sv_e (v_i - v_j))^2`
 /// over the uvs, subject to `su_e (u_i - u_j) >= 0`, `sv_e (v_i - v_j) >= 0` for every edge
@@ -37,11 +44,11 @@ struct Norm_preserving_problem
   const std::vector<std::array<double, 2> >* order = nullptr;
 };
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// What one solve of a model of `NormPreservingSolver` did.
 struct Norm_preserving_solve_report
 {
-  Norm_preserving_solver_status status = SOLVER_FAILED; ///< how the solve ended
+  Norm_preserving_solver_status status = NORM_PRESERVING_SOLVER_FAILED; ///< how the solve ended
   bool has_statistics = false;      ///< whether the solver reported the two fields below
   int iterations = 0;               ///< iterations of the solver
   double kkt_residual = 0;          ///< largest residual the solver reports

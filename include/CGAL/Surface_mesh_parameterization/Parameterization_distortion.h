@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Parameterization_distortion.h
+/// \ingroup PkgNormPreservingParameterization
+/// Distortion measures of a uv map.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_DISTORTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_DISTORTION_H
 
@@ -21,7 +28,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// Distortion of a uv map of a triangle mesh, over the faces and edges whose vertices all have
 /// a uv. Every measure but the flip counts is taken after scaling the uv map by the one factor
 /// that best fits the 3D edge lengths (least squares; the L1 measures use the factor that best
@@ -170,7 +177,7 @@ Parameterization_distortion measure_distortion(const std::vector<std::array<Vert
 } // namespace Norm_preserving
 } // namespace internal
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationFunctions
 /// measures the distortion of `uvmap` on `mesh`; `vpmap` tells which vertices have a uv.
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` from vertices to a 2D point type
@@ -219,7 +226,7 @@ Parameterization_distortion measure_distortion(const TriangleMesh& mesh, VertexU
   return NP::measure_distortion(measured_edges, triangles, xyz, uv);
 }
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationFunctions
 /// measures the distortion of the uv map of a polygon soup, such as `texture_polygon_soup()`
 /// computes: each face is triangulated as that function does, and the faces and edges whose
 /// vertices all have a uv are measured.

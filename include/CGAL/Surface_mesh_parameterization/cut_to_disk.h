@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file cut_to_disk.h
+/// \ingroup PkgNormPreservingParameterization
+/// A short cut that makes a mesh component a topological disk, for cut-based methods.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_CUT_TO_DISK_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_CUT_TO_DISK_H
 
@@ -13,7 +20,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// What `cut_to_disk()` did.
 /// \tparam SeamMesh the `CGAL::Seam_mesh` type
 template <typename SeamMesh>
@@ -33,7 +40,7 @@ struct Disk_cut_result
   halfedge_descriptor border_halfedge;
 };
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationFunctions
 /// cuts the connected component of `h` into a topological disk, for the parameterizers that
 /// need one (LSCM, ARAP, the fixed-border ones): marks seam edges in `seam_mesh` with
 /// `Seam_mesh::add_seam()`, so that the component of the seam mesh has exactly one border

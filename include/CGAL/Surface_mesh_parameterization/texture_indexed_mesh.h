@@ -1,3 +1,10 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file texture_indexed_mesh.h
+/// \ingroup PkgNormPreservingParameterization
+/// Texturing a user's own indexed mesh type.
+
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_INDEXED_MESH_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_INDEXED_MESH_H
 
@@ -9,7 +16,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationTypes
 /// Adapts a user's indexed mesh type, which need not be a CGAL graph, to
 /// `texture_indexed_mesh()`. There is no general definition: specialize it for your type
 /// (or pass any class with the same static members as the `Traits` argument). A model of the
@@ -35,7 +42,7 @@ namespace Surface_mesh_parameterization {
 template <typename IndexedMesh>
 struct Indexed_mesh_traits;
 
-/// \ingroup PkgNormPreservingParameterization
+/// \ingroup PkgNormPreservingParameterizationFunctions
 /// textures a user's indexed mesh exactly as `texture_polygon_mesh()` textures the same
 /// vertices and faces held in a CGAL mesh (the same uvs, bit for bit): `texture_polygon_soup()`
 /// on the vertices and faces that `traits` reads, the uv of vertex `i` written as

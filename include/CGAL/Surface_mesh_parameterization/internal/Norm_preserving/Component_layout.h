@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Lays the separately parameterized components of a mesh side by side, at their common
 // scale, with disjoint bounding boxes (shelf packing, tallest first).
 

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The graph Laplacian D'D of the mesh restricted to its free vertices (the two fixed ones
 // eliminated, Dirichlet), and the right-hand side of a least-squares fit of the mesh to wished
 // edge differences with it: the one system of the ADMM solver's mesh step and of the stress

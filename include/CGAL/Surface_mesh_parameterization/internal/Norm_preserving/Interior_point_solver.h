@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Primal-dual interior-point method (Mehrotra predictor-corrector) for the convex QP
 //   min 1/2 x'Px + q'x   s.t.   G x <= h,
 // with P positive semidefinite. Each iteration factors the normal matrix P + G'WG; its

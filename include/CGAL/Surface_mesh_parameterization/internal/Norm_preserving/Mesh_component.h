@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Step "extract" of the data flow: the connected component of a halfedge, indexed in the
 // mesh's own vertex order, with positions, unique edges, and validation of the input.
 

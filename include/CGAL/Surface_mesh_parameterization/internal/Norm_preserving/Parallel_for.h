@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Runs independent pieces of work on several threads when the package is built with TBB
 // (CGAL_LINKED_WITH_TBB), one after the other otherwise. The callers split their work into
 // a number of pieces that does not depend on the number of threads and combine the pieces'

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Step 1 of the paper for one polygon of a soup, adding no vertex: a polygon that passes
 // through a vertex twice split into simple polygons, and each of them triangulated.
 

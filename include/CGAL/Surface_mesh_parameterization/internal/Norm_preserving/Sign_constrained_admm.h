@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The sign-constrained QP (Eq. 5) by the alternating direction method of multipliers, split
 // so that the only linear system is the graph Laplacian of the mesh, factored once.
 //
@@ -9,14 +12,12 @@
 //   - the edge step: per edge, a two-variable QP in (a_e, b_e) >= 0, solved in closed form;
 //   - the multiplier step.
 // The penalty rho = 1.5 is near the curvature 2 of the objective in edge units (the geometry
-// is normalized to a mean L1 edge length of 1); with over-relaxation 1.9 it took the fewest
-// iterations on cow and mushroom subdivided twice, camel, bunny00 and lion (15-30% fewer than
-// rho = 2 with over-relaxation 1.6). Every 10 iterations the mesh step is mapped onto the
+// is normalized to a mean L1 edge length of 1), with over-relaxation 1.9 (the measurements
+// behind both: doc/performance.md, change 3). Every 10 iterations the mesh step is mapped onto the
 // feasible set by Sign_feasible_projection; it stops when the objective there has decreased
 // by at most the tolerance (relative) over the last 50 iterations, or when the primal residual
 // |Ax - z| and the dual residual |A'(z - z_prev)| both fall under the tolerance times |l1|
-// (the residuals alone overshoot: 700 iterations where 140 suffice on mushroom subdivided
-// once). The returned point is the last feasible one, so it satisfies every constraint exactly.
+// (the residuals alone overshoot: doc/performance.md). The returned point is the last feasible one, so it satisfies every constraint exactly.
 //
 // Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
 // edge loops run in blocks of edges, the right-hand side is gathered per free vertex

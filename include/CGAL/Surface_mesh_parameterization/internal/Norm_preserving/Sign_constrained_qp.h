@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Step 6 of the paper: signs of u_i - u_j and v_i - v_j from the transformed guess, and the
 // QP of Eq. 5 written into a model of QuadraticProgramTraits.
 //

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // A cheap map onto the feasible set of the sign-constrained QP (Eq. 5), per coordinate w (u
 // or v): the constraints s_e (w_i - w_j) >= 0 orient every edge from its lower to its higher
 // end. The signs come from the transformed guess, so the orientation is acyclic and sorting by

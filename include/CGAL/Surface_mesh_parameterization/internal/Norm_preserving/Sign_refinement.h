@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Beyond the paper: sign refinement. The QP (Eq. 5) freezes the signs of u_i - u_j and
 // v_i - v_j from the initial guess. At its optimum some differences are zero (active sign
 // constraints); there the true objective Eq. 3, sum (l1_e - |du| - |dv|)^2, does not care which

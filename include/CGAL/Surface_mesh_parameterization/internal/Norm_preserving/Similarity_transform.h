@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Steps 4-5 of the paper: the similarity M that moves the guessed positions of the fixed
 // pair onto their targets, applied to the whole guess.
 

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Step "extract" for a polygon soup: the edge graph the method works on, built from points
 // and polygons with no halfedge structure, so that any soup is accepted as it is (non-manifold
 // edges and vertices, inconsistent orientation, non-orientable surfaces, duplicate faces,

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Sparse Cholesky factorization used by the interior-point QP solver: CHOLMOD's supernodal
 // factorization when the package was configured with it, Eigen's simplicial one otherwise.
 

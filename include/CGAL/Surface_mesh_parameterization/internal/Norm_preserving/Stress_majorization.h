@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Beyond the paper: the Euclidean (q = 2) norm-preserving objective, the stress
 //   sigma(T) = sum over edges (||T_i - T_j||_2 - ||P_i - P_j||_2)^2,
 // minimized from the QP solution by stress majorization (SMACOF, de Leeuw 1977). With unit

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Steps 8-9 of the paper: fitting the solution into texture space (doc/decisions.md, 8) and
 // m x n tiling.
 
@@ -19,7 +22,7 @@ inline void fit_to_texture_space(std::vector<std::array<double, 2> >& uv, Textur
                                  int tiles_u, int tiles_v)
 {
   if(uv.empty()) return;
-  if(fit == UNIFORM_FIT)
+  if(fit == NORM_PRESERVING_UNIFORM_FIT)
   {
     std::array<double, 2> low = uv[0], high = uv[0];
     for(const auto& p : uv)
@@ -35,7 +38,7 @@ inline void fit_to_texture_space(std::vector<std::array<double, 2> >& uv, Textur
       for(int c = 0; c < 2; ++c)
         p[c] = (p[c] - low[c]) / divisor;
   }
-  else if(fit == CLAMP_FIT)
+  else if(fit == NORM_PRESERVING_CLAMP_FIT)
   {
     for(auto& p : uv)
       for(int c = 0; c < 2; ++c)

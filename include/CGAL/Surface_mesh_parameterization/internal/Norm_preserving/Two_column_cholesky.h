@@ -1,13 +1,16 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Sparse Cholesky factorization L L' = P A P' of a symmetric positive definite matrix, kept
 // in simplicial form with a solve for two right-hand sides at once, stored interleaved
 // (x0 y0 x1 y1 ...): the ADMM solver's inner loop solves the same Laplacian for u and v in
-// every iteration, and one pass over the factor for both is about twice as fast as two
-// column solves (and than CHOLMOD's supernodal solve, whose BLAS calls are tiny for two
-// columns). The factorization itself is CHOLMOD's supernodal one when the package is
-// configured with CHOLMOD (4x faster than Eigen's simplicial one at 150k vertices), converted
-// to simplicial form; Eigen's SimplicialLLT otherwise. CHOLMOD orders with METIS: its
-// analysis takes longer than AMD's, but the factor has a third fewer entries at 150k vertices
-// and its elimination tree splits evenly (below), which hundreds of solves repay.
+// every iteration, and one pass over the factor for both is faster than two column solves
+// (and than CHOLMOD's supernodal solve, whose BLAS calls are tiny for two columns). The
+// factorization itself is CHOLMOD's supernodal one when the package is configured with
+// CHOLMOD, converted to simplicial form; Eigen's SimplicialLLT otherwise. CHOLMOD orders with
+// METIS: its analysis takes longer than AMD's, but the factor is smaller and its elimination
+// tree splits evenly (below), which hundreds of solves repay. The measurements behind these
+// choices are in doc/performance.md.
 //
 // The triangular solves run on several threads (Parallel_for.h): the elimination tree is cut
 // into `part_count` sets of whole subtrees of about equal work and a "top" holding the

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The interpolating uniform cubic B-spline of the graph-based initial guess (Section 4.3 of
 // the paper, doc/decisions.md, 7): the curve f(t), 0 <= t <= 1, through data points D_0..D_{N-1}
 // at the uniform parameters t_k = k / (N - 1).
