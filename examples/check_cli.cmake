@@ -40,6 +40,13 @@ function(expect_textured basename)
   set(${basename}_vertices ${nv} PARENT_SCOPE)
 endfunction()
 
+# The tool on `input`, writing to `basename`, with the options that follow: it must fail with
+# exit status 1 and a message matching `expected_output`, and write nothing.
+function(refused expected_output input basename)
+  run(1 "${expected_output}" "${input}" ${basename} ${ARGN})
+  expect_nothing_written(${basename})
+endfunction()
+
 # A small output: every uv in [0,1], and every face corner `i/i` names an existing vertex and
 # its own texture coordinate.
 function(expect_faces_reference_vt basename)
@@ -78,24 +85,17 @@ run(2 "--tiles takes MxN" --tiles 0x2)
 run(2 "--fixed-pair takes two vertex indices" --fixed-pair 1)
 
 # Inputs that cannot be read or textured: exit 1, a message that says what is wrong, no file.
-run(1 "cannot read .*missing.off: no such file" missing.off out_missing)
-expect_nothing_written(out_missing)
+refused("cannot read .*missing.off: no such file" missing.off out_missing)
 file(WRITE "${WORK}/garbage.off" "this is not a mesh\n")
-run(1 "cannot read .*garbage.off: not a valid off file" garbage.off out_garbage)
-expect_nothing_written(out_garbage)
+refused("cannot read .*garbage.off: not a valid off file" garbage.off out_garbage)
 file(WRITE "${WORK}/empty.obj" "")
-run(1 "cannot read .*empty.obj: the file is empty" empty.obj out_empty)
-expect_nothing_written(out_empty)
+refused("cannot read .*empty.obj: the file is empty" empty.obj out_empty)
 file(WRITE "${WORK}/points.obj" "v 0 0 0\nv 1 0 0\n")
-run(1 "cannot read .*points.obj: .*no face" points.obj out_points)
-expect_nothing_written(out_points)
+refused("cannot read .*points.obj: .*no face" points.obj out_points)
 file(WRITE "${WORK}/mesh.xyz" "0 0 0\n")
-run(1 "cannot read .*mesh.xyz: not a mesh format: .xyz" mesh.xyz out_unsupported)
-expect_nothing_written(out_unsupported)
-run(1 "error: .*fixed vertices are not" "${MESHES}/cow.off" out_badpair --fixed-pair 0,2000)
-expect_nothing_written(out_badpair)
-run(1 "error: .*the file has 2904 vertices" "${MESHES}/cow.off" out_farpair --fixed-pair 0,5000)
-expect_nothing_written(out_farpair)
+refused("cannot read .*mesh.xyz: not a mesh format: .xyz" mesh.xyz out_unsupported)
+refused("error: .*fixed vertices are not" "${MESHES}/cow.off" out_badpair --fixed-pair 0,2000)
+refused("error: .*the file has 2904 vertices" "${MESHES}/cow.off" out_farpair --fixed-pair 0,5000)
 
 # Every defect of real files is textured with the default options.
 # Two triangles that share only a vertex (a bow tie).
