@@ -244,25 +244,20 @@ Parameterization_distortion measure_soup_distortion(const PointRange& points, co
 {
   namespace NP = internal::Norm_preserving;
   std::vector<std::array<std::size_t, 2> > measured_edges;
-  std::vector<std::array<std::size_t, 3> > triangles, polygon_triangles;
-  std::vector<std::vector<std::size_t> > loops;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  NP::Polygon_pieces pieces;
+  std::vector<std::size_t> corners;
   for(const auto& polygon : polygons)
   {
-    loops.clear();
-    NP::simple_loops(std::vector<std::size_t>(polygon.begin(), polygon.end()), loops);
-    for(const auto& loop : loops)
-    {
-      if(loop.size() < 3)
-        continue;
-      NP::triangulate_polygon(points, loop, polygon_triangles);
-      for(const auto& t : polygon_triangles)
-        if(get(vpmap, t[0]) && get(vpmap, t[1]) && get(vpmap, t[2]))
-        {
-          triangles.push_back(t);
-          for(int e = 0; e < 3; ++e)
-            measured_edges.push_back({(std::min)(t[e], t[(e + 1) % 3]), (std::max)(t[e], t[(e + 1) % 3])});
-        }
-    }
+    corners.assign(polygon.begin(), polygon.end());
+    pieces.split(points, corners, [](std::size_t, std::size_t) { },
+      [&](const std::array<std::size_t, 3>& t) {
+        if(!get(vpmap, t[0]) || !get(vpmap, t[1]) || !get(vpmap, t[2]))
+          return;
+        triangles.push_back(t);
+        for(int e = 0; e < 3; ++e)
+          measured_edges.push_back({(std::min)(t[e], t[(e + 1) % 3]), (std::max)(t[e], t[(e + 1) % 3])});
+      });
   }
   std::sort(measured_edges.begin(), measured_edges.end());
   measured_edges.erase(std::unique(measured_edges.begin(), measured_edges.end()), measured_edges.end());

@@ -51,11 +51,25 @@ inline std::size_t automatic_partner(const Norm_preserving_geometry& geometry, s
 }
 
 // `a`: the vertex of smallest x, lowest index on ties; `b`: its automatic partner before any
-// guess. The component has at least one edge.
+// guess. Where every edge at `a` has zero length (coincident vertices kept apart), the longest
+// edge instead (lowest indices on ties). The component has at least one edge.
 inline std::pair<std::size_t, std::size_t> automatic_fixed_pair(const Norm_preserving_geometry& geometry)
 {
   const std::size_t a = lowest_x_vertex(geometry.points);
-  return {a, automatic_partner(geometry, a)};
+  std::pair<std::size_t, std::size_t> pair(a, automatic_partner(geometry, a));
+  double longest = l1_distance(geometry.points[pair.first], geometry.points[pair.second]);
+  if(longest > 0)
+    return pair;
+  for(const auto& e : geometry.edges)
+  {
+    const double length = l1_distance(geometry.points[e[0]], geometry.points[e[1]]);
+    if(length > longest)
+    {
+      longest = length;
+      pair = {e[0], e[1]};
+    }
+  }
+  return pair;
 }
 
 // Targets (doc/decisions.md, 2): `a` at the origin, `b` along the guessed direction from `a` to

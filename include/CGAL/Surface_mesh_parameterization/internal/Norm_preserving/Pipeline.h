@@ -63,27 +63,6 @@ private:
   std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
 
-// The fixed pair by choice of the pipeline: `automatic_fixed_pair()`, or, where all edges at
-// that vertex have zero length (coincident vertices kept apart), the longest edge (lowest
-// indices on ties).
-inline std::pair<std::size_t, std::size_t> automatic_pair_of_positive_length(const Norm_preserving_geometry& geometry)
-{
-  std::pair<std::size_t, std::size_t> pair = automatic_fixed_pair(geometry);
-  if(l1_distance(geometry.points[pair.first], geometry.points[pair.second]) > 0)
-    return pair;
-  double longest = 0;
-  for(const auto& e : geometry.edges)
-  {
-    const double length = l1_distance(geometry.points[e[0]], geometry.points[e[1]]);
-    if(length > longest)
-    {
-      longest = length;
-      pair = {e[0], e[1]};
-    }
-  }
-  return pair;
-}
-
 // `Solver` is a model of NormPreservingSolver.
 template <typename InitialGuess, typename Solver>
 class Pipeline
@@ -152,7 +131,7 @@ private:
     Error_code choose_fixed_pair(const std::optional<std::pair<std::size_t, std::size_t> >& pair)
     {
       automatic = !pair;
-      std::tie(a, b) = pair ? *pair : automatic_pair_of_positive_length(geometry);
+      std::tie(a, b) = pair ? *pair : automatic_fixed_pair(geometry);
       if(!is_edge(geometry, a, b))
         return fail(ERROR_WRONG_PARAMETER, "the fixed vertices are not the two ends of an edge");
       report.fixed_a = a;

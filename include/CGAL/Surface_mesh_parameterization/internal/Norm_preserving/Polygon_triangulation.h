@@ -115,6 +115,44 @@ void triangulate_polygon(const PointRange& points, const Polygon& polygon,
       triangles.push_back({corner[0], corner[i], corner[i + 1]});
 }
 
+// One polygon of a soup, in pieces: a proper triangle as it is; otherwise its simple loops,
+// each of two corners handed to `edge(i, j)`, each larger one triangulated and its triangles
+// handed to `triangle(t)`. Returns how many corners the loops kept (the rest were repeats).
+// Keeps its buffers from one polygon to the next.
+class Polygon_pieces
+{
+public:
+  template <typename PointRange, typename Edge, typename Triangle>
+  std::size_t split(const PointRange& points, const std::vector<std::size_t>& corners, Edge edge, Triangle triangle)
+  {
+    if(corners.size() == 3 && corners[0] != corners[1] && corners[1] != corners[2] && corners[0] != corners[2])
+    {
+      triangle({corners[0], corners[1], corners[2]});
+      return 3;
+    }
+    m_loops.clear();
+    simple_loops(corners, m_loops);
+    std::size_t kept = 0;
+    for(const auto& loop : m_loops)
+    {
+      kept += loop.size();
+      if(loop.size() == 2)
+        edge(loop[0], loop[1]);
+      else if(loop.size() > 2)
+      {
+        triangulate_polygon(points, loop, m_triangles);
+        for(const auto& t : m_triangles)
+          triangle(t);
+      }
+    }
+    return kept;
+  }
+
+private:
+  std::vector<std::vector<std::size_t> > m_loops;
+  std::vector<std::array<std::size_t, 3> > m_triangles;
+};
+
 } // namespace Norm_preserving
 } // namespace internal
 } // namespace Surface_mesh_parameterization

@@ -86,12 +86,12 @@ Error_code check_polygon_soup(const PointRange& points, const PolygonRange& poly
 // position share the lowest index among them if `weld`, otherwise each is its own.
 inline void weld_vertices(Soup_graph& graph, bool weld)
 {
+  if(!weld)
+    return;
   std::vector<std::size_t> referenced;
   for(std::size_t i = 0; i < graph.representative.size(); ++i)
     if(graph.representative[i] != Soup_graph::none)
       referenced.push_back(i);
-  if(!weld)
-    return;
   const auto& p = graph.positions;
   std::sort(referenced.begin(), referenced.end(), [&p](std::size_t i, std::size_t j) {
     return p[i] < p[j] || (p[i] == p[j] && i < j);
@@ -140,8 +140,7 @@ Soup_graph build_soup_graph(const PointRange& points, const PolygonRange& polygo
     return i;
   };
   std::vector<std::size_t> corners;
-  std::vector<std::vector<std::size_t> > loops;
-  std::vector<std::array<std::size_t, 3> > triangles;
+  Polygon_pieces pieces;
   std::vector<std::size_t> first_corners; // a representative of each polygon, for the numbering
   const auto add_edge = [&](std::size_t i, std::size_t j) {
     graph.edges.push_back({(std::min)(i, j), (std::max)(i, j)});
@@ -155,28 +154,12 @@ Soup_graph build_soup_graph(const PointRange& points, const PolygonRange& polygo
     if(corners.empty())
       continue;
     first_corners.push_back(corners.front());
-    if(corners.size() == 3 && corners[0] != corners[1] && corners[1] != corners[2] && corners[0] != corners[2])
-    {
-      for(int e = 0; e < 3; ++e) // a proper triangle, the common case, as it is
-        add_edge(corners[std::size_t(e)], corners[std::size_t((e + 1) % 3)]);
-      continue;
-    }
-    loops.clear();
-    simple_loops(corners, loops);
-    std::size_t kept = 0;
-    for(const auto& loop : loops)
-    {
-      kept += loop.size();
-      if(loop.size() == 2)
-        add_edge(loop[0], loop[1]);
-      else if(loop.size() > 2)
-      {
-        triangulate_polygon(points, loop, triangles);
-        for(const auto& t : triangles)
-          for(int e = 0; e < 3; ++e)
-            add_edge(t[std::size_t(e)], t[std::size_t((e + 1) % 3)]);
-      }
-    }
+    const std::size_t kept = pieces.split(points, corners,
+      [&](std::size_t i, std::size_t j) { add_edge(i, j); },
+      [&](const std::array<std::size_t, 3>& t) {
+        for(int e = 0; e < 3; ++e)
+          add_edge(t[std::size_t(e)], t[std::size_t((e + 1) % 3)]);
+      });
     graph.repeated_corners += corners.size() - kept;
   }
   std::sort(graph.edges.begin(), graph.edges.end());
