@@ -7,7 +7,8 @@
 // every iteration, and one pass over the factor for both is faster than two column solves
 // (and than CHOLMOD's supernodal solve, whose BLAS calls are tiny for two columns). The
 // factorization itself is CHOLMOD's supernodal one when the package is configured with
-// CHOLMOD, converted to simplicial form; Eigen's SimplicialLLT otherwise. CHOLMOD orders with
+// CHOLMOD and the matrix has at least 25,000 rows, converted to simplicial form; Eigen's
+// SimplicialLLT in AMD order otherwise (faster below that size). CHOLMOD orders with
 // METIS: its analysis takes longer than AMD's, but the factor is smaller and its elimination
 // tree splits evenly (below), which hundreds of solves repay. The measurements behind these
 // choices are in doc/performance.md.
@@ -77,7 +78,8 @@ public:
       y[2 * std::size_t(m_position[i]) + 1] = b[2 * i + 1];
     }
     // L y = P b: the parts, their updates of the top gathered, then the top.
-    parallel_for_each_index(part_count, [&](std::size_t p) {
+    const std::size_t parts = m_part_columns.empty() ? 0 : part_count; // a small factor is all top
+    parallel_for_each_index(parts, [&](std::size_t p) {
       for(int k = m_part_first[p]; k < m_part_first[p + 1]; ++k)
         forward_column(std::size_t(m_part_columns[k]), y);
     });
@@ -94,7 +96,7 @@ public:
       for(std::size_t p = 0; p < part_count; ++p)
         for(int c = 0; c < 2; ++c)
           y[2 * (m_n + p * top + q) + c] = y[2 * std::size_t(m_top[q]) + c];
-    parallel_for_each_index(part_count, [&](std::size_t p) {
+    parallel_for_each_index(parts, [&](std::size_t p) {
       for(int k = m_part_first[p + 1]; k-- > m_part_first[p];)
         backward_column(std::size_t(m_part_columns[k]), y);
     });
@@ -110,11 +112,14 @@ public:
 
 private:
   static constexpr std::size_t part_count = 4;
+  static constexpr std::size_t simplicial_size = 25000; // with CHOLMOD, smaller matrices go to Eigen
 
   bool factor(const Sparse_matrix& lower)
   {
     m_n = std::size_t(lower.rows());
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    if(m_n < simplicial_size) // METIS's analysis and the supernodal BLAS calls cost more than they save
+      return factor_simplicial(lower);
     struct Cholmod // frees the factor and the workspace on every way out
     {
       cholmod_common common;
@@ -170,6 +175,12 @@ private:
       m_position[std::size_t(permutation[k])] = int(k);
     return true;
 #else
+    return factor_simplicial(lower);
+#endif
+  }
+  // Eigen's simplicial factorization in AMD order.
+  bool factor_simplicial(const Sparse_matrix& lower)
+  {
     Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > llt(lower);
     if(llt.info() != Eigen::Success)
       return false;
@@ -179,7 +190,6 @@ private:
     m_values.assign(factor.valuePtr(), factor.valuePtr() + m_first[m_n]);
     m_position.assign(llt.permutationP().indices().data(), llt.permutationP().indices().data() + m_n);
     return true;
-#endif
   }
 
   void forward_column(std::size_t j, std::vector<double>& y) const
