@@ -321,7 +321,8 @@ int main(int argc, char** argv)
   summary << '\n'
           << "objective (Eq. 3): " << initial << " at the guess -> " << report.objective << ", "
           << active << "/" << constraints << " sign constraints active, " << iterations
-          << " solver iterations, KKT residual " << kkt << '\n'
+          << " solver iterations, KKT residual " << kkt << ", within " << report.optimality_gap
+          << " of the optimum (certified)\n"
           << "time: " << report.seconds << " s\n"
           << "distortion: edge-length error " << d.edge_length_error << " (L1 " << d.l1_edge_length_error
           << "), flipped faces " << d.flipped_faces << "/" << d.faces << " ("

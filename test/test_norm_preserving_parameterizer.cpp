@@ -104,6 +104,9 @@ TEST_P(RealMesh, SolvesToAFeasibleOptimumWithTheFixedPairInPlace)
   EXPECT_LE(exact.report.max_constraint_violation, 1e-9 * mean_edge_length(run.mesh));
   EXPECT_GE(run.report.objective, exact.report.objective * (1 - 1e-8));
   EXPECT_LE(run.report.objective, exact.report.objective * (1 + 1e-4));
+  // The certificate bounds that distance, and tells something.
+  EXPECT_LE(run.report.objective, exact.report.objective * (1 + run.report.optimality_gap) * (1 + 1e-12));
+  EXPECT_LT(run.report.optimality_gap, 1e-2);
 
   // The fixed pair: source(h) at the origin, target(h) along the XY-MinMax direction at L1
   // distance equal to the edge's 3D L1 length.
@@ -135,21 +138,22 @@ INSTANTIATE_TEST_SUITE_P(Suite, RealMesh,
                     "knot1", "eight", "elephant",   // genus 1, 2, 3
                     "holes", "lion"));              // several border loops
 
-// A tight ADMM tolerance (1e-9) reaches the exact optimum to 1e-8.
-TEST(NormPreservingADMMSolver, ReachesTheOptimumToATightTolerance)
+// The exact mode: certified within 1e-9 of the optimum, which the interior point confirms.
+TEST(NormPreservingADMMSolver, CertifiedModeReachesTheOptimum)
 {
-  for(const std::string name : {"nefertiti", "cow", "mushroom"})
+  for(const std::string name : {"nefertiti", "cow", "mushroom", "knot1"})
   {
     Mapped_mesh run(np_test::load_mesh(name)), exact(np_test::load_mesh(name));
     const Halfedge h = *halfedges(run.mesh).begin();
-    Parameterizer tight(SMP::XY_min_max_initial_guess(), SMP::Norm_preserving_ADMM_solver(1e-9));
+    Parameterizer certified(SMP::XY_min_max_initial_guess(), SMP::Norm_preserving_ADMM_solver::certified());
     Exact_parameterizer exact_parameterizer;
-    run.parameterize(tight, h);
+    run.parameterize(certified, h);
     exact.parameterize(exact_parameterizer, h);
     ASSERT_EQ(run.status, SMP::OK) << name;
     ASSERT_EQ(exact.status, SMP::OK) << name;
     EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << name;
     EXPECT_EQ(run.report.max_constraint_violation, 0.) << name;
+    EXPECT_LE(run.report.optimality_gap, 1e-9) << name;
     EXPECT_NEAR(run.report.objective, exact.report.objective, 1e-8 * exact.report.objective) << name;
   }
 }
@@ -169,6 +173,16 @@ TEST(NormPreservingADMMSolver, ReportsTheIterationLimitWithAFeasiblePoint)
   EXPECT_NE(run.report.warning.find("iteration limit"), std::string::npos);
   EXPECT_EQ(run.report.max_constraint_violation, 0.);
   EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective);
+
+  // Far from the optimum, the certificate still bounds the distance to it.
+  Mapped_mesh exact(np_test::load_mesh("camel"));
+  Exact_parameterizer exact_parameterizer;
+  exact_parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
+  exact.parameterize(exact_parameterizer, *halfedges(exact.mesh).begin());
+  ASSERT_EQ(exact.status, SMP::OK) << exact.report.message;
+  const double distance = run.report.objective / exact.report.objective - 1;
+  EXPECT_GT(distance, 1e-3);
+  EXPECT_GE(run.report.optimality_gap, distance);
 }
 
 // On its time limit (zero: the first check) likewise.

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,10 @@ struct Norm_preserving_report
   bool has_solver_statistics = false;  ///< whether the solver reported the two fields below
   int solver_iterations = 0;           ///< iterations of the QP solver
   double kkt_residual = 0;             ///< largest residual the solver reports on the normalized QP (edge lengths ~ 1)
+  /// a certified upper bound on the relative distance `(f - f*) / f*` of the QP solution's
+  /// objective to the optimum of the QP (before the refinements); 0 where there is nothing to
+  /// solve, infinity for a solver that certifies nothing
+  double optimality_gap = std::numeric_limits<double>::infinity();
   int sign_refinement_rounds = 0;      ///< rounds of sign refinement kept (each lowered Eq. 3)
   /// Eq. 3 at the QP solution, then after each round kept: non-increasing; empty when the
   /// sign refinement is off

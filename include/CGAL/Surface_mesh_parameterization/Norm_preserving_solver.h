@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
 
 #include <array>
+#include <limits>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ struct Norm_preserving_solve_report
   bool has_statistics = false;      ///< whether the solver reported the two fields below
   int iterations = 0;               ///< iterations of the solver
   double kkt_residual = 0;          ///< largest residual the solver reports
+  /// a certified upper bound on `(f - f*) / f*`, `f` the objective of the solution and `f*`
+  /// the optimum (from a duality gap); infinity if the solver certifies nothing
+  double optimality_gap = std::numeric_limits<double>::infinity();
   double assembly_seconds = 0;      ///< setting up the linear algebra
   double factorization_seconds = 0; ///< factorizations done before iterating
   double iteration_seconds = 0;     ///< the rest of the solve

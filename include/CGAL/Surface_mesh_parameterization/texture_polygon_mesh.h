@@ -75,6 +75,8 @@ struct Texture_polygon_mesh_report
   std::size_t repeated_corners = 0;               ///< face corners dropped as repeats of a vertex
   std::size_t point_components = 0;               ///< components of zero extent, mapped to a point
   double objective = 0;                           ///< sum of the components' Eq. 3 objectives
+  /// the largest of the components' certified gaps, which bounds that of `objective` too
+  double optimality_gap = 0;
   std::vector<Norm_preserving_report> reports;    ///< one per component
   double seconds = 0;                             ///< wall-clock time of the call
 };
@@ -169,6 +171,7 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
       component_report.vertices = geometry.points.size();
       component_report.edges = geometry.edges.size();
       component_report.solver_status = NORM_PRESERVING_SOLVER_CONVERGED;
+      component_report.optimality_gap = 0;
       component_uv.assign(geometry.points.size(), {0., 0.});
       ++r.point_components;
       status = pair && pair->first != pair->second ? ERROR_WRONG_PARAMETER : OK;
@@ -181,6 +184,7 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
     component_report.fixed_a = graph.members[c][component_report.fixed_a]; // the caller's indices
     component_report.fixed_b = graph.members[c][component_report.fixed_b];
     r.objective += component_report.objective;
+    r.optimality_gap = (std::max)(r.optimality_gap, component_report.optimality_gap);
     for(std::size_t k = 0; k < component_uv.size(); ++k)
       uv[graph.members[c][k]] = component_uv[k];
   }

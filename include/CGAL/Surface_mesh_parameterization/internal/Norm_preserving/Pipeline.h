@@ -252,6 +252,7 @@ private:
         for(const Fixed_vertex& f : fixed)
           result[f.index] = f.target;
         solved.status = NORM_PRESERVING_SOLVER_CONVERGED;
+        solved.optimality_gap = 0;
       }
       else if(!pipeline.m_solver.solve(Norm_preserving_problem{geometry, lengths, qp_signs, fixed, order}, result,
                                        state, solved))
@@ -263,6 +264,7 @@ private:
         report.has_solver_statistics = solved.has_statistics;
         report.solver_iterations = solved.iterations;
         report.kkt_residual = solved.kkt_residual;
+        report.optimality_gap = solved.optimality_gap;
         if(solved.status != NORM_PRESERVING_SOLVER_CONVERGED)
           report.warning = solved.message;
         report.timings.assembly = solved.assembly_seconds;

@@ -13,11 +13,14 @@
 //   - the multiplier step.
 // The penalty rho = 1.5 is near the curvature 2 of the objective in edge units (the geometry
 // is normalized to a mean L1 edge length of 1), with over-relaxation 1.9 (the measurements
-// behind both: doc/performance.md, change 3). Every 10 iterations the mesh step is mapped onto the
-// feasible set by Sign_feasible_projection; it stops when the objective there has decreased
-// by at most the tolerance (relative) over the last 50 iterations, or when the primal residual
-// |Ax - z| and the dual residual |A'(z - z_prev)| both fall under the tolerance times |l1|
-// (the residuals alone overshoot: doc/performance.md). The returned point is the last feasible one, so it satisfies every constraint exactly.
+// behind both: doc/performance.md, change 3). Every 5 iterations the mesh step is mapped onto
+// the feasible set by Sign_feasible_projection and its objective f recorded. The decrease of f
+// is close to geometric: the rule stops when the decrease still to come, extrapolated from the
+// last two decreases (d2 r / (1 - r), r = d2 / d1), is at most the tolerance times f at two
+// checks in a row (doc/performance.md, change 7). The returned point is the last feasible one,
+// so it satisfies every constraint exactly, and its distance to the optimum is certified by a
+// dual bound from the multipliers (Dual_bound.h). In the certified mode the solve goes on until
+// that certificate itself is at most the tolerance.
 //
 // Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
 // edge loops run in blocks of edges, the right-hand side is gathered per free vertex
@@ -31,6 +34,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Dual_bound.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
@@ -52,9 +56,10 @@ namespace Norm_preserving {
 
 struct Admm_settings
 {
-  double tolerance;
+  double tolerance;  // on the extrapolated relative error, or on the certified gap
   int max_iterations;
   double time_limit; // seconds
+  bool certified;    // stop on the certified gap, not on the extrapolation
 };
 
 enum class Admm_outcome { CONVERGED, ITERATION_LIMIT, TIME_LIMIT, FACTORIZATION_FAILED };
@@ -65,6 +70,7 @@ struct Admm_result
   int iterations = 0;
   double primal_residual = 0; // |Ax - z| / |l1|
   double dual_residual = 0;   // |A'(z - z_prev)| / |l1|, over the free vertices
+  double gap = std::numeric_limits<double>::infinity(); // certified bound on (f - f*) / f* at the result
   double assembly_seconds = 0, factorization_seconds = 0, iteration_seconds = 0;
 };
 
@@ -93,6 +99,35 @@ inline std::array<double, 2> edge_step(double l, double ca, double cb, double rh
   return {a_only, 0.};
 }
 
+// The stopping rule: fed the objective of the feasible point at successive checks, says when
+// the decrease still to come, extrapolated geometrically from the last two decreases, has
+// been at most `tolerance` times the objective at two checks in a row.
+class Extrapolated_stop
+{
+public:
+  explicit Extrapolated_stop(double tolerance) : m_tolerance(tolerance) { }
+
+  bool settled(double objective)
+  {
+    const double before = m_older - m_old, last = m_old - objective; // NaN at the first checks
+    bool small = last == 0 && before >= 0;
+    if(last > 0 && before > last)
+    {
+      const double ratio = last / before;
+      small = last * ratio / (1. - ratio) <= m_tolerance * objective;
+    }
+    m_passed = small ? m_passed + 1 : 0;
+    m_older = m_old;
+    m_old = objective;
+    return m_passed >= 2;
+  }
+
+private:
+  double m_tolerance;
+  double m_older = std::numeric_limits<double>::quiet_NaN(), m_old = std::numeric_limits<double>::quiet_NaN();
+  int m_passed = 0;
+};
+
 // Solves Eq. 5 from `uv` (the transformed guess, which satisfies the constraints) and
 // writes the solution to `uv`. With a `state`, reuses its factorization and starts from its
 // edge values and multipliers when it has them, and leaves them there for the next solve;
@@ -109,7 +144,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   const Clock::time_point begin = Clock::now();
   Clock::time_point start = begin;
   const double rho = 1.5, relaxation = 1.9;
-  const int check_every = 10, objective_window = 50;
+  const int check_every = 5, certify_every = 25;
   const std::size_t n = geometry.points.size(), m = geometry.edges.size();
   Admm_result result;
   const Sign_feasible_projection projection(geometry, signs, fixed, order ? *order : uv); // ordered by the guess
@@ -161,7 +196,16 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   const std::size_t block = 8192;
   std::vector<double> block_primal((m + block - 1) / block);
   UV_vector feasible;          // the last iterate swept onto the feasible set
-  std::vector<double> history; // its objective at every check
+  double objective = 0;        // its objective
+  Extrapolated_stop stop(settings.tolerance);
+  int certified_at = 0;        // the iteration of the last certificate
+  bool gap_is_current = false; // result.gap is that of `feasible`
+  auto dual_bound = [&]() {
+    std::vector<std::array<double, 2> > y(w);
+    for(auto& v : y)
+      for(double& x : v) x *= rho;
+    return sign_constrained_dual_bound(geometry, lengths, signs, free_index, incidence, cholesky, feasible, std::move(y));
+  };
   result.outcome = Admm_outcome::ITERATION_LIMIT;
   for(int k = 1; k <= settings.max_iterations; ++k)
   {
@@ -216,14 +260,21 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     result.dual_residual = std::sqrt(dual) / l1_norm;
     feasible = uv;
     projection.apply(feasible);
-    history.push_back(sign_constrained_objective(geometry, lengths, signs, feasible));
-    const std::size_t window = std::size_t(objective_window / check_every);
-    const double decrease = history.size() > window ? history[history.size() - 1 - window] - history.back() : -1;
-    if((decrease >= 0 && decrease <= settings.tolerance * history.back())
-       || (result.primal_residual <= settings.tolerance && result.dual_residual <= settings.tolerance))
+    objective = sign_constrained_objective(geometry, lengths, signs, feasible);
+    gap_is_current = false;
+    if(stop.settled(objective) && (!settings.certified || k - certified_at >= certify_every))
     {
-      result.outcome = Admm_outcome::CONVERGED;
-      break;
+      if(settings.certified)
+      {
+        certified_at = k;
+        result.gap = relative_gap(objective, dual_bound(), l1_norm * l1_norm);
+        gap_is_current = true;
+      }
+      if(!settings.certified || result.gap <= settings.tolerance)
+      {
+        result.outcome = Admm_outcome::CONVERGED;
+        break;
+      }
     }
     if(seconds_since(begin) > settings.time_limit)
     {
@@ -231,8 +282,14 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
       break;
     }
   }
-  if(!feasible.empty()) // else no iteration ran and `uv` is the feasible guess
-    uv = feasible;
+  if(feasible.empty()) // no iteration ran: `uv` is the feasible guess
+  {
+    feasible = uv;
+    objective = sign_constrained_objective(geometry, lengths, signs, feasible);
+  }
+  if(!gap_is_current)
+    result.gap = relative_gap(objective, dual_bound(), l1_norm * l1_norm);
+  uv = feasible;
   if(state)
   {
     state->z.swap(z);
