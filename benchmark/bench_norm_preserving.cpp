@@ -75,7 +75,7 @@ static void ours(benchmark::State& state, const std::string& name)
   }
   const auto per_run = benchmark::Counter::kAvgIterations;
   state.counters["vertices"] = double(num_vertices(mesh));
-  state.counters["iterations"] = parameterizer.report().solver_iterations;
+  state.counters["solver_iterations"] = parameterizer.report().solver_iterations;
   state.counters["s_extract"] = benchmark::Counter(sum.extraction, per_run);
   state.counters["s_guess"] = benchmark::Counter(sum.guess, per_run);
   state.counters["s_assemble"] = benchmark::Counter(sum.assembly, per_run);

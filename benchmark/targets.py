@@ -1,0 +1,127 @@
+#!/usr/bin/env python3
+"""The speed and accuracy targets of doc/benchmarks.md, measured in one run of the comparison
+harness: on every mesh of the suite and the two subdivision series, ours (default settings),
+ours in the certified exact mode and CGAL's LSCM, each in its own process.
+
+Per mesh: LSCM / ours (target: above 1 on every mesh of more than 1,000 vertices); the
+distance of the default objective (Eq. 3) to the certified optimum (target: at most 1e-4);
+the default's certified gap and whether it bounds that distance; the certified gap of the
+exact mode (target: at most 1e-9) and its time against the default's (goal: at most 2).
+
+Usage: targets.py HARNESS [--runs N] [--csv FILE] [mesh ...]
+HARNESS is build/benchmark/compare_parameterizers; the table goes to stdout."""
+import csv
+import math
+import subprocess
+import sys
+import tempfile
+
+SUITE = ["nefertiti", "mushroom", "three_peaks", "lion-head", "mannequin-devil", "cow", "camel", "bunny00",
+         "armadillo", "bear", "man", "homer", "handle", "bull", "knot1", "elk", "eight", "femur", "elephant",
+         "refined_elephant", "double-torus-example", "3torus", "torus_quad", "cube_quad", "lion", "holes",
+         "mech-holes-shark", "pig", "head", "elephant-with-holes", "knot2",
+         "mushroom*1", "mushroom*2", "mushroom*3", "cow*1", "cow*2", "cow*3"]
+METHODS = "ours-xy,ours-certified,lscm"
+
+
+def main(argv):
+    if len(argv) < 2:
+        print(__doc__)
+        return 2
+    harness, runs, csv_path, meshes = argv[1], "3", None, []
+    i = 2
+    while i < len(argv):
+        if argv[i] == "--runs":
+            runs, i = argv[i + 1], i + 2
+        elif argv[i] == "--csv":
+            csv_path, i = argv[i + 1], i + 2
+        else:
+            meshes.append(argv[i])
+            i += 1
+    meshes = meshes or SUITE
+    if csv_path is None:
+        csv_path = tempfile.mkstemp(suffix=".csv")[1]
+    subprocess.run([harness, "--runs", runs, "--time-limit", "1800", "--methods", METHODS, "--csv", csv_path]
+                   + meshes, check=True, stdout=subprocess.DEVNULL)
+    rows = {}
+    for row in csv.DictReader(open(csv_path)):
+        rows.setdefault(row["mesh"], {})[row["method"]] = row
+    print_table(rows)
+    return 0
+
+
+def value(row, column):
+    if row is None or row["status"] != "ok" or row[column] == "":
+        return None
+    return float(row[column])
+
+
+def print_table(rows):
+    print("| mesh | vertices | ours (s) | LSCM (s) | LSCM / ours | faster than LSCM | distance to optimum "
+          "| certified gap | gap bounds distance | exact mode (s) | exact gap | exact / ours |")
+    print("|" + "---|" * 12)
+    faster = considered = bounded = checked = 0
+    worst_distance, worst_exact_gap, exact_ratios = 0.0, 0.0, []
+    for mesh, m in rows.items():
+        ours, exact, lscm = m.get("ours-xy"), m.get("ours-certified"), m.get("lscm")
+        vertices = int(next(iter(m.values()))["vertices"])
+        t_ours, t_exact, t_lscm = value(ours, "seconds"), value(exact, "seconds"), value(lscm, "seconds")
+        f_ours, f_exact = value(ours, "Eq. 3"), value(exact, "Eq. 3")
+        gap, exact_gap = value(ours, "certified gap"), value(exact, "certified gap")
+        cells = [mesh, str(vertices), fmt(t_ours, "%.4f"), fmt(t_lscm, "%.4f")]
+        if t_ours and t_lscm:
+            ratio = t_lscm / t_ours
+            cells.append("%.2f" % ratio)
+            if vertices > 1000:
+                considered += 1
+                faster += ratio > 1
+                cells.append("met" if ratio > 1 else "not met")
+            else:
+                cells.append("n/a (<= 1,000 vertices)")
+        else:
+            cells += [lscm["status"] if lscm else "-", "-"]
+        distance = None
+        if f_ours is not None and f_exact:
+            distance = (f_ours - f_exact) / f_exact
+            worst_distance = max(worst_distance, distance)
+        cells += [fmt(distance, "%.2e"), fmt(gap, "%.2e")]
+        if distance is not None and gap is not None:
+            checked += 1
+            holds = gap >= distance - 1e-9  # the exact mode itself is within 1e-9
+            bounded += holds
+            cells.append("yes" if holds else "NO")
+        else:
+            cells.append("-")
+        cells += [fmt(t_exact, "%.4f"), fmt(exact_gap, "%.1e")]
+        if exact_gap is not None:
+            worst_exact_gap = max(worst_exact_gap, exact_gap)
+        if t_exact and t_ours:
+            exact_ratios.append(t_exact / t_ours)
+            cells.append("%.1f" % (t_exact / t_ours))
+        else:
+            cells.append("-")
+        print("| " + " | ".join(cells) + " |")
+    print()
+    print("| target | measured | status |")
+    print("|---|---|---|")
+    print("| 1. faster than LSCM on every mesh above 1,000 vertices | %d of %d | %s |"
+          % (faster, considered, "met" if faster == considered else "not met"))
+    print("| 3. default within 1e-4 of the optimum (certified exact mode) | largest distance %.2e | %s |"
+          % (worst_distance, "met" if worst_distance <= 1e-4 else "not met"))
+    print("| 3. the certified gap bounds the distance | %d of %d meshes | %s |"
+          % (bounded, checked, "met" if bounded == checked else "not met"))
+    print("| 3. exact mode certified to 1e-9 | largest gap %.1e | %s |"
+          % (worst_exact_gap, "met" if worst_exact_gap <= 1e-9 else "not met"))
+    if exact_ratios:
+        exact_ratios.sort()
+        print("| 3. exact mode at most 2x the default's time (goal) | median %.1fx, largest %.1fx | %s |"
+              % (exact_ratios[len(exact_ratios) // 2], exact_ratios[-1],
+                 "met" if exact_ratios[-1] <= 2 else "not met"))
+
+
+def fmt(x, form):
+    return "-" if x is None or (isinstance(x, float) and math.isnan(x)) else form % x
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
