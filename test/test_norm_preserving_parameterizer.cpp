@@ -138,23 +138,32 @@ INSTANTIATE_TEST_SUITE_P(Suite, RealMesh,
                     "knot1", "eight", "elephant",   // genus 1, 2, 3
                     "holes", "lion"));              // several border loops
 
-// The exact mode: certified within 1e-9 of the optimum, which the interior point confirms.
+// The exact mode: certified within 1e-9 of the optimum, which the interior point confirms. On
+// nefertiti, cow and mushroom the optimum on the active set found where the default stops is
+// certified at once: no iteration beyond the default's.
 TEST(NormPreservingADMMSolver, CertifiedModeReachesTheOptimum)
 {
   for(const std::string name : {"nefertiti", "cow", "mushroom", "knot1"})
   {
-    Mapped_mesh run(np_test::load_mesh(name)), exact(np_test::load_mesh(name));
+    Mapped_mesh run(np_test::load_mesh(name)), exact(np_test::load_mesh(name)), fast(np_test::load_mesh(name));
     const Halfedge h = *halfedges(run.mesh).begin();
     Parameterizer certified(SMP::XY_min_max_initial_guess(), SMP::Norm_preserving_ADMM_solver::certified());
     Exact_parameterizer exact_parameterizer;
+    Parameterizer default_parameterizer;
     run.parameterize(certified, h);
     exact.parameterize(exact_parameterizer, h);
+    fast.parameterize(default_parameterizer, h);
     ASSERT_EQ(run.status, SMP::OK) << name;
     ASSERT_EQ(exact.status, SMP::OK) << name;
+    ASSERT_EQ(fast.status, SMP::OK) << name;
     EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << name;
     EXPECT_EQ(run.report.max_constraint_violation, 0.) << name;
     EXPECT_LE(run.report.optimality_gap, 1e-9) << name;
     EXPECT_NEAR(run.report.objective, exact.report.objective, 1e-8 * exact.report.objective) << name;
+    if(name != "knot1")
+    {
+      EXPECT_EQ(run.report.solver_iterations, fast.report.solver_iterations) << name;
+    }
   }
 }
 

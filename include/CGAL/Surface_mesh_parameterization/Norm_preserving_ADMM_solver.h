@@ -33,8 +33,10 @@ namespace Surface_mesh_parameterization {
 /// Two modes:
 /// - by default, the solve stops when the decrease of the objective still to come,
 ///   extrapolated from the last iterations, is at most `tolerance` (relative);
-/// - `certified()`: the solve stops only when the certified gap is at most `tolerance`
-///   (default 1e-9), the exact mode.
+/// - `certified()`, the exact mode: the solve stops only when the certified gap is at most
+///   `tolerance` (default 1e-9); from where the default would stop, it also tries the exact
+///   optimum on the set of constraints the iterations have made active, which certifies at
+///   once on small meshes (on large ones the interior point is faster: doc/benchmarks.md).
 ///
 /// With the default time limit (none) the result depends on the input only, bit for bit.
 ///
@@ -50,7 +52,8 @@ public:
   /// at most `tolerance` times the objective, or after `max_iterations` iterations or
   /// `time_limit` seconds. The default puts the objective within 1e-4 of the optimum on the
   /// test suite and the benchmark meshes (doc/benchmarks.md).
-  explicit Norm_preserving_ADMM_solver(double tolerance = 2.5e-5, int max_iterations = 20000,
+  explicit Norm_preserving_ADMM_solver(double tolerance = internal::Norm_preserving::admm_default_tolerance,
+                                       int max_iterations = 20000,
                                        double time_limit = std::numeric_limits<double>::infinity())
     : m_settings{tolerance, max_iterations, time_limit, false}
   { }

@@ -20,7 +20,12 @@
 // checks in a row (doc/performance.md, change 7). The returned point is the last feasible one,
 // so it satisfies every constraint exactly, and its distance to the optimum is certified by a
 // dual bound from the multipliers (Dual_bound.h). In the certified mode the solve goes on until
-// that certificate itself is at most the tolerance.
+// that certificate itself is at most the tolerance: from the point where the default rule would
+// stop, the bound is computed every 25 iterations, and the exact optimum on the active set
+// ADMM has found (Active_set_polish.h, whose multipliers make the bound tight) is tried then,
+// and again each time the iteration count has doubled, three times at most: each try corrects
+// the active set up to 8 times (one factorization each), which settles within a few rounds
+// on small meshes and may not at all on large ones (doc/performance.md, change 7).
 //
 // Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
 // edge loops run in blocks of edges, the right-hand side is gathered per free vertex
@@ -34,6 +39,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Active_set_polish.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Dual_bound.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
@@ -53,6 +59,8 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
+
+constexpr double admm_default_tolerance = 2.5e-5; // of Norm_preserving_ADMM_solver
 
 struct Admm_settings
 {
@@ -197,14 +205,65 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   std::vector<double> block_primal((m + block - 1) / block);
   UV_vector feasible;          // the last iterate swept onto the feasible set
   double objective = 0;        // its objective
-  Extrapolated_stop stop(settings.tolerance);
+  Extrapolated_stop stop(settings.certified ? admm_default_tolerance : settings.tolerance);
+  bool settled = false;        // the certified mode: the rule has stopped once
   int certified_at = 0;        // the iteration of the last certificate
+  int next_polish = 0;         // the certified mode: the iteration of the next polish,
+  int polishes_left = 3;       // and how many more may be tried
   bool gap_is_current = false; // result.gap is that of `feasible`
+  const double scale = l1_norm * l1_norm;
   auto dual_bound = [&]() {
     std::vector<std::array<double, 2> > y(w);
     for(auto& v : y)
       for(double& x : v) x *= rho;
     return sign_constrained_dual_bound(geometry, lengths, signs, free_index, incidence, cholesky, feasible, std::move(y));
+  };
+  // The optimum on the active set of z, corrected a few times; true if certified within the
+  // tolerance, then it replaces `feasible`.
+  auto polish = [&]() {
+    Active_set active(m);
+    for(std::size_t e = 0; e < m; ++e)
+      for(int c = 0; c < 2; ++c)
+        active[e][c] = z[e][c] == 0.;
+    UV_vector candidate;
+    std::vector<std::array<double, 2> > y, estimate(w);
+    for(auto& v : estimate)
+      for(double& x : v) x *= rho;
+    for(int round = 0; round < 8; ++round)
+    {
+      const UV_vector start = round == 0 ? uv : candidate; // the last ADMM iterate, then the last candidate
+      if(!solve_on_active_set(geometry, lengths, signs, fixed, active, start, estimate, candidate, y))
+        return false;
+      UV_vector projected = candidate;
+      projection.apply(projected);
+      const double f = sign_constrained_objective(geometry, lengths, signs, projected);
+      const double gap =
+        relative_gap(f, sign_constrained_dual_bound(geometry, lengths, signs, free_index, incidence, cholesky, projected, y), scale);
+      if(gap <= settings.tolerance)
+      {
+        feasible.swap(projected);
+        objective = f;
+        result.gap = gap;
+        gap_is_current = true;
+        return true;
+      }
+      bool changed = false; // violated constraints join the active set, negative multipliers leave it
+      for(std::size_t e = 0; e < m; ++e)
+      {
+        const auto& p = candidate[geometry.edges[e][0]];
+        const auto& q = candidate[geometry.edges[e][1]];
+        const double r = lengths[e] - signs[e][0] * (p[0] - q[0]) - signs[e][1] * (p[1] - q[1]);
+        for(int c = 0; c < 2; ++c)
+        {
+          const bool turn = active[e][c] ? -2. * r - y[e][c] < 0 : signs[e][c] * (p[c] - q[c]) < 0;
+          active[e][c] = char(active[e][c] != turn);
+          changed = changed || turn;
+        }
+      }
+      if(!changed)
+        return false;
+    }
+    return false;
   };
   result.outcome = Admm_outcome::ITERATION_LIMIT;
   for(int k = 1; k <= settings.max_iterations; ++k)
@@ -262,15 +321,25 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     projection.apply(feasible);
     objective = sign_constrained_objective(geometry, lengths, signs, feasible);
     gap_is_current = false;
-    if(stop.settled(objective) && (!settings.certified || k - certified_at >= certify_every))
+    settled = stop.settled(objective) || (settled && settings.certified);
+    if(settled && !settings.certified)
     {
-      if(settings.certified)
+      result.outcome = Admm_outcome::CONVERGED;
+      break;
+    }
+    if(settled && k - certified_at >= certify_every)
+    {
+      certified_at = k;
+      result.gap = relative_gap(objective, dual_bound(), scale);
+      gap_is_current = true;
+      bool certified = result.gap <= settings.tolerance;
+      if(!certified && k >= next_polish && polishes_left > 0)
       {
-        certified_at = k;
-        result.gap = relative_gap(objective, dual_bound(), l1_norm * l1_norm);
-        gap_is_current = true;
+        next_polish = 2 * k;
+        --polishes_left;
+        certified = polish();
       }
-      if(!settings.certified || result.gap <= settings.tolerance)
+      if(certified)
       {
         result.outcome = Admm_outcome::CONVERGED;
         break;
@@ -288,7 +357,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     objective = sign_constrained_objective(geometry, lengths, signs, feasible);
   }
   if(!gap_is_current)
-    result.gap = relative_gap(objective, dual_bound(), l1_norm * l1_norm);
+    result.gap = relative_gap(objective, dual_bound(), scale);
   uv = feasible;
   if(state)
   {

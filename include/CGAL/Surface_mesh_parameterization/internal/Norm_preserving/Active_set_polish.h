@@ -1,0 +1,245 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The exact optimum of the sign-constrained QP (Eq. 5) on a guessed active set, for the
+// certified mode of the ADMM solver (doc/decisions.md, "The QP and its solver"). An active
+// constraint su (u_i - u_j) = 0 ties u_i to u_j: per coordinate, the active edges merge the
+// vertices into clusters that share one value, and Eq. 5 with the active constraints as
+// equalities is an unconstrained least-squares problem in the clusters' values (a cluster
+// holding a fixed vertex takes its value). Its normal equations, coupled in u and v through
+// the residuals, are factored once (Eigen's simplicial LDL', AMD order); they are singular
+// where the optimum is not unique, and proximal steps pick the optimum nearest the start.
+//
+// The multipliers follow from the solution: on an inactive constraint the gradient of the
+// objective, y = -2 r_e; on the active edges of a cluster, the values that make A'y vanish at
+// every free vertex, found on a spanning tree of the cluster from its leaves up (the other
+// active edges keep the ADMM's estimate, clamped to a nonnegative multiplier). At the optimum with the right active set this y
+// makes the dual bound of Dual_bound.h meet the objective; a wrong active set shows as a
+// violated constraint or a negative multiplier mu = -2 r_e - y, and is corrected: violated
+// constraints join it, those of negative multiplier leave it.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ACTIVE_SET_POLISH_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ACTIVE_SET_POLISH_H
+
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+namespace Norm_preserving {
+
+using Active_set = std::vector<std::array<char, 2> >; // per edge and coordinate: at equality
+
+// The solution of Eq. 5 with the constraints of `active` as equalities nearest to `start`,
+// written to `uv`, and its multipliers to `y` (per edge, for a and b), those of the active
+// edges off the spanning trees taken from `estimate`; false if the active set ties the two
+// fixed vertices to different values.
+inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                                const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
+                                const Active_set& active, const UV_vector& start,
+                                const std::vector<std::array<double, 2> >& estimate, UV_vector& uv,
+                                std::vector<std::array<double, 2> >& y)
+{
+  const std::size_t n = geometry.points.size(), m = geometry.edges.size();
+  // Clusters per coordinate (union-find), their fixed values and their unknowns.
+  std::array<std::vector<std::size_t>, 2> cluster;
+  std::array<std::vector<int>, 2> unknown; // per cluster root: index of its unknown, -1 if fixed
+  std::array<std::vector<double>, 2> value;
+  int unknowns = 0;
+  for(int c = 0; c < 2; ++c)
+  {
+    std::vector<std::size_t>& parent = cluster[c];
+    parent.resize(n);
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    auto find = [&](std::size_t i) {
+      while(parent[i] != i)
+        i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    for(std::size_t e = 0; e < m; ++e)
+      if(active[e][c])
+      {
+        const std::size_t a = find(geometry.edges[e][0]), b = find(geometry.edges[e][1]);
+        parent[(std::max)(a, b)] = (std::min)(a, b);
+      }
+    for(std::size_t i = 0; i < n; ++i)
+      parent[i] = find(i);
+    unknown[c].assign(n, 0);
+    value[c].assign(n, 0.);
+    std::vector<char> is_fixed(n, 0);
+    for(const Fixed_vertex& f : fixed)
+    {
+      const std::size_t r = parent[f.index];
+      if(is_fixed[r] && value[c][r] != f.target[c])
+        return false;
+      is_fixed[r] = 1;
+      value[c][r] = f.target[c];
+    }
+    for(std::size_t i = 0; i < n; ++i)
+      if(parent[i] == i)
+        unknown[c][i] = is_fixed[i] ? -1 : unknowns++;
+  }
+
+  // Normal equations of sum_e (d_e - C_e x)^2 in the clusters' unknowns.
+  std::vector<Eigen::Triplet<double> > triplets;
+  triplets.reserve(10 * m);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
+  for(std::size_t e = 0; e < m; ++e)
+  {
+    std::array<int, 4> index;
+    std::array<double, 4> coefficient;
+    int count = 0;
+    double d = lengths[e];
+    for(int c = 0; c < 2; ++c)
+      for(int end = 0; end < 2; ++end)
+      {
+        const std::size_t r = cluster[c][geometry.edges[e][std::size_t(end)]];
+        const double a = end == 0 ? signs[e][c] : -signs[e][c];
+        if(unknown[c][r] < 0)
+          d -= a * value[c][r];
+        else
+        {
+          index[std::size_t(count)] = unknown[c][r];
+          coefficient[std::size_t(count++)] = a;
+        }
+      }
+    for(int s = 0; s < count; ++s)
+    {
+      rhs[index[std::size_t(s)]] += coefficient[std::size_t(s)] * d;
+      for(int t = 0; t < count; ++t)
+        if(index[std::size_t(s)] >= index[std::size_t(t)]) // the lower triangle; a cluster's two ends cancel
+          triplets.emplace_back(index[std::size_t(s)], index[std::size_t(t)],
+                                coefficient[std::size_t(s)] * coefficient[std::size_t(t)]);
+    }
+  }
+  // The optimum is not unique where a vertex can slide along a diagonal without changing any
+  // L1 length: the system is singular there. Proximal steps from the start point (the ADMM's),
+  // x <- (H + eps I)^-1 (b + eps x), converge to the optimum nearest to it.
+  double diagonal_sum = 0;
+  for(const auto& t : triplets)
+    if(t.row() == t.col())
+      diagonal_sum += t.value();
+  const double eps = 1e-9 * diagonal_sum / (std::max)(1, unknowns);
+  for(int k = 0; k < unknowns; ++k)
+    triplets.emplace_back(k, k, eps);
+  Eigen::SparseMatrix<double> normal(unknowns, unknowns);
+  normal.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(normal);
+  if(ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0).any())
+    return false;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(unknowns), members = Eigen::VectorXd::Zero(unknowns);
+  for(int c = 0; c < 2; ++c)
+    for(std::size_t i = 0; i < n; ++i)
+      if(unknown[c][cluster[c][i]] >= 0)
+      {
+        x[unknown[c][cluster[c][i]]] += start[i][c];
+        members[unknown[c][cluster[c][i]]] += 1;
+      }
+  x = x.cwiseQuotient(members);
+  for(int step = 0; step < 4; ++step)
+  {
+    const Eigen::VectorXd next = ldlt.solve(rhs + eps * x);
+    if(!next.allFinite())
+      return false;
+    const bool still = (next - x).lpNorm<Eigen::Infinity>() <= 1e-15 * (1. + x.lpNorm<Eigen::Infinity>());
+    x = next;
+    if(still)
+      break;
+  }
+  uv.resize(n);
+  for(int c = 0; c < 2; ++c)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t r = cluster[c][i];
+      uv[i][c] = unknown[c][r] < 0 ? value[c][r] : x[unknown[c][r]];
+    }
+
+  // Multipliers: -2 r_e, then the active edges of a spanning tree of each cluster, from the
+  // leaves up, so that A'y vanishes at every free vertex.
+  y.resize(m);
+  for(std::size_t e = 0; e < m; ++e)
+  {
+    const auto& p = uv[geometry.edges[e][0]];
+    const auto& q = uv[geometry.edges[e][1]];
+    const double r = lengths[e] - signs[e][0] * (p[0] - q[0]) - signs[e][1] * (p[1] - q[1]);
+    for(int c = 0; c < 2; ++c) // an estimate clamped to a nonnegative multiplier -2 r_e - y
+      y[e][c] = active[e][c] ? (std::min)(estimate[e][c], -2. * r) : -2. * r;
+  }
+  std::vector<std::size_t> first(n + 1), incident(2 * m); // edges at each vertex
+  for(const auto& e : geometry.edges)
+    for(std::size_t end : e)
+      ++first[end + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+  for(std::size_t e = 0; e < m; ++e)
+    for(std::size_t end : geometry.edges[e])
+      incident[fill[end]++] = e;
+  std::vector<char> is_fixed_vertex(n, 0);
+  for(const Fixed_vertex& f : fixed)
+    is_fixed_vertex[f.index] = 1;
+  for(int c = 0; c < 2; ++c)
+  {
+    // A breadth-first tree of each cluster's active edges, rooted at a fixed vertex if it has one.
+    std::vector<std::ptrdiff_t> tree_edge(n, -1); // the edge to the parent
+    std::vector<char> seen(n, 0);
+    std::vector<std::size_t> order;
+    order.reserve(n);
+    auto grow = [&](std::size_t root) {
+      seen[root] = 1;
+      order.push_back(root);
+      for(std::size_t k = order.size() - 1; k < order.size(); ++k)
+        for(std::size_t l = first[order[k]]; l < first[order[k] + 1]; ++l)
+        {
+          const std::size_t e = incident[l];
+          const std::size_t other = geometry.edges[e][0] + geometry.edges[e][1] - order[k];
+          if(active[e][c] && !seen[other])
+          {
+            seen[other] = 1;
+            tree_edge[other] = std::ptrdiff_t(e);
+            order.push_back(other);
+          }
+        }
+    };
+    for(const Fixed_vertex& f : fixed)
+      if(!seen[f.index])
+        grow(f.index);
+    for(std::size_t i = 0; i < n; ++i)
+      if(!seen[i])
+        grow(i);
+    // (A'y)_i from the edges of known multiplier, then each tree edge set to cancel it.
+    auto contribution = [&](std::size_t e, std::size_t at) {
+      return (at == geometry.edges[e][0] ? signs[e][c] : -signs[e][c]) * y[e][c];
+    };
+    std::vector<double> total(n, 0.);
+    for(std::size_t e = 0; e < m; ++e)
+      if(tree_edge[geometry.edges[e][0]] != std::ptrdiff_t(e) && tree_edge[geometry.edges[e][1]] != std::ptrdiff_t(e))
+        for(std::size_t end : geometry.edges[e])
+          total[end] += contribution(e, end);
+    for(std::size_t k = order.size(); k-- > 0;)
+    {
+      const std::size_t i = order[k];
+      if(tree_edge[i] < 0 || is_fixed_vertex[i])
+        continue;
+      const std::size_t e = std::size_t(tree_edge[i]);
+      y[e][c] = -total[i] / (i == geometry.edges[e][0] ? signs[e][c] : -signs[e][c]);
+      const std::size_t parent = geometry.edges[e][0] + geometry.edges[e][1] - i;
+      total[parent] += contribution(e, parent);
+    }
+  }
+  return true;
+}
+
+} // namespace Norm_preserving
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
