@@ -21,6 +21,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ACTIVE_SET_POLISH_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ACTIVE_SET_POLISH_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 
 #include <Eigen/SparseCholesky>
@@ -167,21 +168,13 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
   y.resize(m);
   for(std::size_t e = 0; e < m; ++e)
   {
-    const auto& p = uv[geometry.edges[e][0]];
-    const auto& q = uv[geometry.edges[e][1]];
-    const double r = lengths[e] - signs[e][0] * (p[0] - q[0]) - signs[e][1] * (p[1] - q[1]);
+    const double r = sign_constrained_residual(geometry, lengths, signs, uv, e);
     for(int c = 0; c < 2; ++c) // an estimate clamped to a nonnegative multiplier -2 r_e - y
       y[e][c] = active[e][c] ? (std::min)(estimate[e][c], -2. * r) : -2. * r;
   }
-  std::vector<std::size_t> first(n + 1), incident(2 * m); // edges at each vertex
-  for(const auto& e : geometry.edges)
-    for(std::size_t end : e)
-      ++first[end + 1];
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-  for(std::size_t e = 0; e < m; ++e)
-    for(std::size_t end : geometry.edges[e])
-      incident[fill[end]++] = e;
+  std::vector<int> every_vertex(n);
+  std::iota(every_vertex.begin(), every_vertex.end(), 0);
+  const Free_vertex_edges incident = free_vertex_edges(geometry, every_vertex);
   std::vector<char> is_fixed_vertex(n, 0);
   for(const Fixed_vertex& f : fixed)
     is_fixed_vertex[f.index] = 1;
@@ -196,9 +189,9 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
       seen[root] = 1;
       order.push_back(root);
       for(std::size_t k = order.size() - 1; k < order.size(); ++k)
-        for(std::size_t l = first[order[k]]; l < first[order[k] + 1]; ++l)
+        for(std::size_t l = incident.first[order[k]]; l < incident.first[order[k] + 1]; ++l)
         {
-          const std::size_t e = incident[l];
+          const std::size_t e = incident.edges[l];
           const std::size_t other = geometry.edges[e][0] + geometry.edges[e][1] - order[k];
           if(active[e][c] && !seen[other])
           {

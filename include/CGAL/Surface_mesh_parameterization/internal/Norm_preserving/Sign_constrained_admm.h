@@ -178,9 +178,10 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
 
   // Edge values z = (a, b), scaled multipliers w, from the guess (or the state).
   std::vector<std::array<double, 2> > z(m), w(m, {0., 0.});
-  auto edge_value = [&](std::size_t e, int c) {
-    return signs[e][c] * (uv[geometry.edges[e][0]][c] - uv[geometry.edges[e][1]][c]);
+  auto edge_value_at = [&](const UV_vector& x, std::size_t e, int c) {
+    return signs[e][c] * (x[geometry.edges[e][0]][c] - x[geometry.edges[e][1]][c]);
   };
+  auto edge_value = [&](std::size_t e, int c) { return edge_value_at(uv, e, c); };
   const bool warm = state && state->z.size() == m && state->w.size() == m && state->signs.size() == m;
   if(warm)
   {
@@ -212,11 +213,14 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   int polishes_left = 3;       // and how many more may be tried
   bool gap_is_current = false; // result.gap is that of `feasible`
   const double scale = l1_norm * l1_norm;
-  auto dual_bound = [&]() {
+  auto multipliers = [&]() { // of the constraints a, b >= 0, from the scaled ones
     std::vector<std::array<double, 2> > y(w);
     for(auto& v : y)
       for(double& x : v) x *= rho;
-    return sign_constrained_dual_bound(geometry, lengths, signs, free_index, incidence, cholesky, feasible, std::move(y));
+    return y;
+  };
+  auto dual_bound = [&]() {
+    return sign_constrained_dual_bound(geometry, lengths, signs, free_index, incidence, cholesky, feasible, multipliers());
   };
   // The optimum on the active set of z, corrected a few times; true if certified within the
   // tolerance, then it replaces `feasible`.
@@ -226,9 +230,8 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
       for(int c = 0; c < 2; ++c)
         active[e][c] = z[e][c] == 0.;
     UV_vector candidate;
-    std::vector<std::array<double, 2> > y, estimate(w);
-    for(auto& v : estimate)
-      for(double& x : v) x *= rho;
+    std::vector<std::array<double, 2> > y;
+    const std::vector<std::array<double, 2> > estimate = multipliers();
     for(int round = 0; round < 8; ++round)
     {
       const UV_vector start = round == 0 ? uv : candidate; // the last ADMM iterate, then the last candidate
@@ -250,12 +253,10 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
       bool changed = false; // violated constraints join the active set, negative multipliers leave it
       for(std::size_t e = 0; e < m; ++e)
       {
-        const auto& p = candidate[geometry.edges[e][0]];
-        const auto& q = candidate[geometry.edges[e][1]];
-        const double r = lengths[e] - signs[e][0] * (p[0] - q[0]) - signs[e][1] * (p[1] - q[1]);
+        const double r = sign_constrained_residual(geometry, lengths, signs, candidate, e);
         for(int c = 0; c < 2; ++c)
         {
-          const bool turn = active[e][c] ? -2. * r - y[e][c] < 0 : signs[e][c] * (p[c] - q[c]) < 0;
+          const bool turn = active[e][c] ? -2. * r - y[e][c] < 0 : edge_value_at(candidate, e, c) < 0;
           active[e][c] = char(active[e][c] != turn);
           changed = changed || turn;
         }

@@ -60,6 +60,15 @@ inline std::vector<double> edge_l1_lengths(const Norm_preserving_geometry& geome
   return edge_lengths(geometry, l1_distance);
 }
 
+// The residual l1_e - su du - sv dv of edge `e` in Eq. 4.
+inline double sign_constrained_residual(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                                        const Edge_signs& signs, const UV_vector& uv, std::size_t e)
+{
+  const auto& p = uv[geometry.edges[e][0]];
+  const auto& q = uv[geometry.edges[e][1]];
+  return lengths[e] - signs[e][0] * (p[0] - q[0]) - signs[e][1] * (p[1] - q[1]);
+}
+
 // Eq. 4: sum over edges of (l1_e - su du - sv dv)^2.
 inline double sign_constrained_objective(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                                          const Edge_signs& signs, const UV_vector& uv)
@@ -67,9 +76,7 @@ inline double sign_constrained_objective(const Norm_preserving_geometry& geometr
   double sum = 0;
   for(std::size_t e = 0; e < lengths.size(); ++e)
   {
-    const auto& p = uv[geometry.edges[e][0]];
-    const auto& q = uv[geometry.edges[e][1]];
-    const double r = lengths[e] - signs[e][0] * (p[0] - q[0]) - signs[e][1] * (p[1] - q[1]);
+    const double r = sign_constrained_residual(geometry, lengths, signs, uv, e);
     sum += r * r;
   }
   return sum;
