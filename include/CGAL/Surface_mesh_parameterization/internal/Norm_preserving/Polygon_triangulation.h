@@ -66,8 +66,9 @@ inline void simple_loops(std::vector<std::size_t> corners, std::vector<std::vect
 // where that finds no complete triangulation (a degenerate outline), by a fan from its first
 // vertex. The hole filling first tries a 2D constrained Delaunay triangulation in the outline's
 // plane when the outline is near planar and its projection simple (checked before anything is
-// inserted), and searches in 3D otherwise: that search grows as n^2.4 on a planar star-shaped
-// outline (21 s at 3,200 corners, where the 2D one takes 0.03 s; doc/performance.md). Not triangulate_faces() itself: on a polygon whose projection crosses itself its
+// inserted), and searches in 3D otherwise: that search grows faster than n^2 on a planar
+// gear-like outline (15.5 s at 3,200 corners, where the 2D one takes 27 ms; doc/performance.md).
+// Not triangulate_faces() itself: on a polygon whose projection crosses itself its
 // constrained Delaunay triangulation inserts the crossings as new vertices, and its hole
 // filling builds an incomplete patch into the mesh; in both cases CGAL 5.5 then reads past the
 // end of the halfedges (found by the fuzzer).
