@@ -92,6 +92,11 @@ file(WRITE "${WORK}/empty.obj" "")
 refused("cannot read .*empty.obj: the file is empty" empty.obj out_empty)
 file(WRITE "${WORK}/points.obj" "v 0 0 0\nv 1 0 0\n")
 refused("cannot read .*points.obj: .*no face" points.obj out_points)
+file(WRITE "${WORK}/bad_index.obj" "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")
+refused("cannot read .*bad_index.obj: not a valid obj file: line 4: vertex 4 of 3" bad_index.obj out_bad_index)
+file(WRITE "${WORK}/bad_vertex.obj" "v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n")
+refused("cannot read .*bad_vertex.obj: not a valid obj file: line 2: a vertex needs three coordinates"
+        bad_vertex.obj out_bad_vertex)
 file(WRITE "${WORK}/mesh.xyz" "0 0 0\n")
 refused("cannot read .*mesh.xyz: not a mesh format: .xyz" mesh.xyz out_unsupported)
 refused("error: .*fixed vertices are not" "${MESHES}/cow.off" out_badpair --fixed-pair 0,2000)
@@ -127,6 +132,22 @@ if(NOT report MATCHES "vertices on no face \\(no uv, written as vt 0 0\\): 1\n.*
 endif()
 run(0 "2 component" exported.obj exported_apart --keep-coincident)
 expect_faces_reference_vt(exported_apart)
+# The tool reads back its own output, whose face of two corners is an `l` statement.
+file(STRINGS "${WORK}/exported_textured.obj" lines REGEX "^l ")
+if(NOT lines)
+  message(FATAL_ERROR "exported_textured.obj has no l statement to read back")
+endif()
+run(0 "9 vertices, 4 faces.*wrote read_back.obj" exported_textured.obj read_back)
+expect_faces_reference_vt(read_back)
+# A Blender export (CRLF): material library, object, normals, quads with v/vt/vn corners, a
+# loose edge (`l`), a face with negative indices and one continued on the next line.
+file(WRITE "${WORK}/blender.obj" "# Blender v3.6.0 OBJ File\r\nmtllib cube.mtl\r\no Cube\r\n"
+           "v 1 1 -1\r\nv 1 -1 -1\r\nv 1 1 1\r\nv 1 -1 1\r\nv -1 1 -1\r\nv -1 -1 -1\r\nv -1 1 1\r\nv -1 -1 1\r\n"
+           "vt 0.625 0.5\r\nvt 0.875 0.5\r\nvt 0.875 0.75\r\nvt 0.625 0.75\r\nvn 0 1 0\r\nusemtl Material\r\ns off\r\n"
+           "f 1/1/1 5/2/1 7/3/1 3/4/1\r\nf 4/1/1 3/2/1 7/3/1 8/4/1\r\nf 8//1 7//1 5//1 6//1\r\nf -3 -7 -5 -1\r\n"
+           "f 2/1 1/2 \\\r\n3/3 4/4\r\nf 6 5 1 2\r\nl 1 8\r\n")
+run(0 "8 vertices, 7 faces.*1 component.*wrote blender_textured.obj" blender.obj)
+expect_faces_reference_vt(blender_textured)
 
 # Every input format, and the options.
 run(0 "wrote cow.obj" "${MESHES}/cow.off" cow --guess combination --tiles 2x3 --fit clamp)

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 #include <CGAL/property_map.h>
 
+#include "obj_soup_reader.h"
 #include "textured_obj_writer.h"
 #include "uv_layout_svg.h"
 
@@ -188,7 +189,8 @@ SMP::Error_code texture(const Soup& soup, UV& uv, const Settings& s, SMP::Textur
   return SMP::texture_polygon_soup(soup.points, soup.polygons, CGAL::make_property_map(uv), options, &report);
 }
 
-// Reads `path` with CGAL's polygon soup reader; on failure, says what is wrong.
+// Reads `path`: OBJ with the tool's own reader (obj_soup_reader.h), the other formats with
+// CGAL's polygon soup reader; on failure, says what is wrong.
 std::optional<std::string> read_soup(const std::string& path, Soup& soup)
 {
   std::error_code ec;
@@ -203,6 +205,16 @@ std::optional<std::string> read_soup(const std::string& path, Soup& soup)
   if(extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl" && extension != ".ts")
     return "not a mesh format: " + (extension.empty() ? std::string("no extension") : extension) +
            " (OFF, OBJ, PLY, STL and GOCAD TS files are read)";
+  const std::string format = extension.substr(1);
+  if(extension == ".obj")
+  {
+    const std::optional<std::string> wrong = np_examples::read_obj_soup(path, soup.points, soup.polygons);
+    if(wrong)
+      return "not a valid obj file: " + *wrong;
+    if(soup.polygons.empty())
+      return std::string("the obj file has no face");
+    return std::nullopt;
+  }
   // The reader says why it failed on the standard streams: keep its first line.
   std::ostringstream said;
   std::streambuf* const err = std::cerr.rdbuf(said.rdbuf());
@@ -214,7 +226,6 @@ std::optional<std::string> read_soup(const std::string& path, Soup& soup)
     return std::nullopt;
   std::string reason = said.str();
   reason = reason.substr(0, reason.find('\n'));
-  const std::string format = extension.substr(1);
   if(read || (!soup.points.empty() && soup.polygons.empty() && reason.find("empty") != std::string::npos))
     return "the " + format + " file has no face";
   return "not a valid " + format + " file" + (reason.empty() ? std::string() : ": " + reason);
