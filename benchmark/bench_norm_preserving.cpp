@@ -10,7 +10,6 @@
 // (texture_polygon_soup) on the same vertices and triangles as `ours` (the parameterizer on
 // the Surface_mesh), for the comparison of the two paths:
 //   bench_norm_preserving --benchmark_filter='(ours|soup)/(cow/(0|3)|bunny00/0|mushroom/3)/'
-// `polygon/corners:<n>/uneven:<0|1>` triangulates one large polygon (step 1).
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -23,13 +22,11 @@
 #include <CGAL/Surface_mesh_parameterization/cut_to_disk.h>
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
 #include <benchmark/benchmark.h>
 
 #include <array>
-#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -180,26 +177,5 @@ BENCHMARK_CAPTURE(ours, bunny00, std::string("bunny00"))->Apply(paths)->Arg(0);
 BENCHMARK_CAPTURE(soup, cow, std::string("cow"))->Apply(paths)->Arg(0)->Arg(3);
 BENCHMARK_CAPTURE(soup, bunny00, std::string("bunny00"))->Apply(paths)->Arg(0);
 BENCHMARK_CAPTURE(soup, mushroom, std::string("mushroom"))->Apply(paths)->Arg(3);
-
-// Step 1 on one large polygon: a planar gear-like outline of n corners (radius 1 and 0.6
-// alternating, `uneven`: plus 0.01 (k mod 7)), as CAD files have for caps.
-static void polygon(benchmark::State& state)
-{
-  const std::size_t n = std::size_t(state.range(0));
-  std::vector<Kernel::Point_3> points;
-  std::vector<std::size_t> outline;
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const double angle = 2 * CGAL_PI * double(k) / double(n);
-    const double radius = (k % 2 ? 1. : 0.6) + (state.range(1) ? 0.01 * double(k % 7) : 0.);
-    points.emplace_back(radius * std::cos(angle), radius * std::sin(angle), 0.);
-    outline.push_back(k);
-  }
-  std::vector<std::array<std::size_t, 3> > triangles;
-  for(auto _ : state)
-    SMP::internal::Norm_preserving::triangulate_polygon(points, outline, triangles);
-  state.counters["triangles"] = double(triangles.size());
-}
-BENCHMARK(polygon)->Unit(benchmark::kMillisecond)->ArgNames({"corners", "uneven"})->ArgsProduct({{400, 3200}, {0, 1}});
 
 BENCHMARK_MAIN();

@@ -7,7 +7,6 @@
 
 #include <CGAL/Surface_mesh_parameterization/Combination_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Graph_based_initial_guess.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Two_column_cholesky.h>
 #include <CGAL/IO/OFF.h>
 #include <CGAL/property_map.h>
@@ -461,42 +460,6 @@ TEST(BadInput, PolygonWithARepeatedVertexIsSplitThere)
   Parameterizer parameterizer;
   run.parameterize(parameterizer, first_halfedge(run.mesh));
   expect_failure(run, SMP::ERROR_NON_TRIANGULAR_MESH, "repeated vertex");
-}
-
-TEST(BadInput, LargeNonConvexPolygonIsTriangulatedWithoutOverlap)
-{
-  // A gear-like cap of 2,000 corners (radius 1 and 0.6 alternating, slightly uneven), counter-
-  // clockwise and clockwise: n - 2 triangles, each side of the outline in exactly one, and no
-  // two overlapping (their areas add up to the polygon's); a fan from one corner would overlap.
-  const std::size_t n = 2000;
-  for(double orientation : {1., -1.})
-  {
-    std::vector<Point_3> points;
-    std::vector<std::size_t> polygon;
-    double area = 0; // shoelace
-    for(std::size_t k = 0; k < n; ++k)
-    {
-      const double angle = 2 * CGAL_PI * double(k) / double(n), radius = (k % 2 ? 1. : 0.6) + 0.01 * double(k % 7);
-      points.emplace_back(radius * std::cos(angle), orientation * radius * std::sin(angle), 0.);
-      polygon.push_back(k);
-    }
-    for(std::size_t k = 0; k < n; ++k)
-      area += (points[k].x() * points[(k + 1) % n].y() - points[(k + 1) % n].x() * points[k].y()) / 2;
-    std::vector<std::array<std::size_t, 3> > triangles;
-    SMP::internal::Norm_preserving::triangulate_polygon(points, polygon, triangles);
-    ASSERT_EQ(triangles.size(), n - 2);
-    std::vector<int> sides(n, 0);
-    double covered = 0;
-    for(const auto& t : triangles)
-    {
-      for(std::size_t e = 0; e < 3; ++e)
-        if(t[(e + 1) % 3] == (t[e] + 1) % n) ++sides[t[e]];
-      const Point_3 &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
-      covered += std::abs((b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y())) / 2;
-    }
-    EXPECT_TRUE(std::all_of(sides.begin(), sides.end(), [](int used) { return used == 1; }));
-    EXPECT_NEAR(covered, std::abs(area), 1e-9 * std::abs(area));
-  }
 }
 
 TEST(BadInput, SoupFacesOfTwoVerticesAreEdgesAndMissingVerticesAreRefused)

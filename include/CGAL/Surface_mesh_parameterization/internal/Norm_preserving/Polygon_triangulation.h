@@ -64,11 +64,7 @@ inline void simple_loops(std::vector<std::size_t> corners, std::vector<std::vect
 // diagonal whose two triangles' normals agree best (as Polygon_mesh_processing::
 // triangulate_faces() does); a larger polygon by hole filling (triangulate_hole_polyline()) or,
 // where that finds no complete triangulation (a degenerate outline), by a fan from its first
-// vertex. The hole filling first tries a 2D constrained Delaunay triangulation in the outline's
-// plane when the outline is near planar and its projection simple (checked before anything is
-// inserted), and searches in 3D otherwise: that search grows faster than n^2 on a planar
-// gear-like outline (15.5 s at 3,200 corners, where the 2D one takes 27 ms; doc/performance.md).
-// Not triangulate_faces() itself: on a polygon whose projection crosses itself its
+// vertex. Not triangulate_faces() itself: on a polygon whose projection crosses itself its
 // constrained Delaunay triangulation inserts the crossings as new vertices, and its hole
 // filling builds an incomplete patch into the mesh; in both cases CGAL 5.5 then reads past the
 // end of the halfedges (found by the fuzzer).
@@ -102,8 +98,7 @@ void triangulate_polygon(const PointRange& points, const Polygon& polygon,
     return;
   }
   std::vector<CGAL::Triple<int, int, int> > patch;
-  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(
-    outline, std::back_inserter(patch), CGAL::parameters::use_2d_constrained_delaunay_triangulation(true));
+  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(outline, std::back_inserter(patch));
   // Complete: n - 2 triangles that use every side of the outline once.
   std::vector<int> sides(n, 0);
   for(const auto& t : patch)
