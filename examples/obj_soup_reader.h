@@ -8,6 +8,7 @@
 #ifndef NP_EXAMPLES_OBJ_SOUP_READER_H
 #define NP_EXAMPLES_OBJ_SOUP_READER_H
 
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
@@ -18,7 +19,8 @@
 namespace np_examples {
 
 // Appends the soup of the OBJ file `path` to `points` (constructed from three doubles) and
-// `polygons` (vectors of 0-based indices); returns what is wrong, with the line, if anything.
+// `polygons` (vectors of indices into `points`); returns what is wrong, with the line, if
+// anything. A `#` ends a line; an `l` of one vertex is a face of one corner, as an `f` is.
 template <typename PointRange, typename PolygonRange>
 std::optional<std::string> read_obj_soup(const std::string& path, PointRange& points, PolygonRange& polygons)
 {
@@ -27,6 +29,7 @@ std::optional<std::string> read_obj_soup(const std::string& path, PointRange& po
   std::ifstream in(path);
   if(!in)
     return std::string("cannot open the file");
+  const std::size_t base = points.size(); // the file's vertex 1 is points[base]
   std::vector<std::pair<std::size_t, long long> > references; // (line, 1-based index) to check at the end
   std::string line, statement;
   std::size_t number = 0;
@@ -34,19 +37,24 @@ std::optional<std::string> read_obj_soup(const std::string& path, PointRange& po
   {
     ++number;
     const std::size_t first_line = number;
-    while(!line.empty() && (line.back() == '\r' || line.back() == '\\')) // CRLF, continuation
+    if(number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) // UTF-8 byte order mark
+      line.erase(0, 3);
+    for(;;) // a comment cut, CRLF and trailing blanks dropped, continued lines joined
     {
-      const bool continued = line.back() == '\\';
-      line.pop_back();
+      line = line.substr(0, line.find('#'));
+      while(!line.empty() && std::isspace(static_cast<unsigned char>(line.back())))
+        line.pop_back();
       std::string next;
-      if(continued && std::getline(in, next))
-      {
-        ++number;
-        line += ' ' + next;
-      }
+      if(line.empty() || line.back() != '\\' || !std::getline(in, next))
+        break;
+      line.back() = ' ';
+      line += next;
+      ++number;
     }
+    if(!line.empty() && line.back() == '\\')
+      line.pop_back();
     std::istringstream words(line);
-    if(!(words >> statement) || statement[0] == '#')
+    if(!(words >> statement))
       continue;
     auto where = [&]() { return "line " + std::to_string(first_line) + ": "; };
     if(statement == "v")
@@ -73,15 +81,15 @@ std::optional<std::string> read_obj_soup(const std::string& path, PointRange& po
         const long long index = std::strtoll(corner.c_str(), &end, 10);
         if(end == corner.c_str() || (*end != '\0' && *end != '/') || index == 0)
           return where() + "'" + corner + "' is not a vertex index";
-        const long long absolute = index < 0 ? (long long)(points.size()) + index + 1 : index;
+        const long long absolute = index < 0 ? (long long)(points.size() - base) + index + 1 : index;
         if(absolute < 1)
           return where() + "'" + corner + "' refers to no vertex before it";
         references.emplace_back(first_line, absolute);
-        corners.push_back(std::size_t(absolute - 1));
+        corners.push_back(base + std::size_t(absolute - 1));
       }
       if(corners.empty())
         return where() + "'" + statement + "' without vertices";
-      if(statement == "f")
+      if(statement == "f" || corners.size() == 1)
         polygons.push_back(corners);
       else
         for(std::size_t k = 0; k + 1 < corners.size(); ++k)
@@ -89,9 +97,9 @@ std::optional<std::string> read_obj_soup(const std::string& path, PointRange& po
     }
   }
   for(const auto& reference : references)
-    if(std::size_t(reference.second) > points.size())
+    if(std::size_t(reference.second) > points.size() - base)
       return "line " + std::to_string(reference.first) + ": vertex " + std::to_string(reference.second) + " of " +
-             std::to_string(points.size());
+             std::to_string(points.size() - base);
   return std::nullopt;
 }
 
