@@ -178,10 +178,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
 
   // Edge values z = (a, b), scaled multipliers w, from the guess (or the state).
   std::vector<std::array<double, 2> > z(m), w(m, {0., 0.});
-  auto edge_value_at = [&](const UV_vector& x, std::size_t e, int c) {
-    return signs[e][c] * (x[geometry.edges[e][0]][c] - x[geometry.edges[e][1]][c]);
-  };
-  auto edge_value = [&](std::size_t e, int c) { return edge_value_at(uv, e, c); };
+  auto edge_value = [&](std::size_t e, int c) { return sign_constraint_value(geometry, signs, uv, e, c); };
   const bool warm = state && state->z.size() == m && state->w.size() == m && state->signs.size() == m;
   if(warm)
   {
@@ -256,7 +253,8 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
         const double r = sign_constrained_residual(geometry, lengths, signs, candidate, e);
         for(int c = 0; c < 2; ++c)
         {
-          const bool turn = active[e][c] ? -2. * r - y[e][c] < 0 : edge_value_at(candidate, e, c) < 0;
+          const bool turn = active[e][c] ? -2. * r - y[e][c] < 0
+                                         : sign_constraint_value(geometry, signs, candidate, e, c) < 0;
           active[e][c] = char(active[e][c] != turn);
           changed = changed || turn;
         }

@@ -60,13 +60,18 @@ inline std::vector<double> edge_l1_lengths(const Norm_preserving_geometry& geome
   return edge_lengths(geometry, l1_distance);
 }
 
+// The value su du (c = 0) or sv dv (c = 1) of edge `e`, which its sign constraint keeps >= 0.
+inline double sign_constraint_value(const Norm_preserving_geometry& geometry, const Edge_signs& signs,
+                                    const UV_vector& uv, std::size_t e, int c)
+{
+  return signs[e][c] * (uv[geometry.edges[e][0]][c] - uv[geometry.edges[e][1]][c]);
+}
+
 // The residual l1_e - su du - sv dv of edge `e` in Eq. 4.
 inline double sign_constrained_residual(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                                         const Edge_signs& signs, const UV_vector& uv, std::size_t e)
 {
-  const auto& p = uv[geometry.edges[e][0]];
-  const auto& q = uv[geometry.edges[e][1]];
-  return lengths[e] - signs[e][0] * (p[0] - q[0]) - signs[e][1] * (p[1] - q[1]);
+  return lengths[e] - sign_constraint_value(geometry, signs, uv, e, 0) - sign_constraint_value(geometry, signs, uv, e, 1);
 }
 
 // Eq. 4: sum over edges of (l1_e - su du - sv dv)^2.
@@ -108,7 +113,7 @@ inline std::pair<double, std::size_t> sign_constraint_extent(const Norm_preservi
   for(std::size_t e = 0; e < signs.size(); ++e)
     for(int c = 0; c < 2; ++c)
     {
-      const double value = signs[e][c] * (uv[geometry.edges[e][0]][c] - uv[geometry.edges[e][1]][c]);
+      const double value = sign_constraint_value(geometry, signs, uv, e, c);
       lowest = (std::min)(lowest, value);
       if(value <= active_threshold) ++active;
     }
