@@ -30,7 +30,7 @@ std::optional<std::string> read_obj_soup(const std::string& path, PointRange& po
   if(!in)
     return std::string("cannot open the file");
   const std::size_t base = points.size(); // the file's vertex 1 is points[base]
-  std::vector<std::pair<std::size_t, long long> > references; // (line, 1-based index) to check at the end
+  std::vector<std::pair<std::size_t, long long> > ahead; // (line, 1-based index) of a vertex not read yet
   std::string line, statement;
   std::size_t number = 0;
   while(std::getline(in, line))
@@ -84,7 +84,8 @@ std::optional<std::string> read_obj_soup(const std::string& path, PointRange& po
         const long long absolute = index < 0 ? (long long)(points.size() - base) + index + 1 : index;
         if(absolute < 1)
           return where() + "'" + corner + "' refers to no vertex before it";
-        references.emplace_back(first_line, absolute);
+        if(std::size_t(absolute) > points.size() - base)
+          ahead.emplace_back(first_line, absolute);
         corners.push_back(base + std::size_t(absolute - 1));
       }
       if(corners.empty())
@@ -96,7 +97,7 @@ std::optional<std::string> read_obj_soup(const std::string& path, PointRange& po
           polygons.push_back(Polygon{corners[k], corners[k + 1]});
     }
   }
-  for(const auto& reference : references)
+  for(const auto& reference : ahead)
     if(std::size_t(reference.second) > points.size() - base)
       return "line " + std::to_string(reference.first) + ": vertex " + std::to_string(reference.second) + " of " +
              std::to_string(points.size() - base);

@@ -212,7 +212,7 @@ std::optional<std::string> read_soup(const std::string& path, Soup& soup)
     if(wrong)
       return "not a valid obj file: " + *wrong;
     if(soup.polygons.empty())
-      return std::string("the obj file has no face");
+      return "the " + format + " file has no face";
     return std::nullopt;
   }
   // The reader says why it failed on the standard streams: keep its first line.
