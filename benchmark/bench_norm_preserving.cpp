@@ -10,6 +10,9 @@
 // (texture_polygon_soup) on the same vertices and triangles as `ours` (the parameterizer on
 // the Surface_mesh), for the comparison of the two paths:
 //   bench_norm_preserving --benchmark_filter='(ours|soup)/(cow/(0|3)|bunny00/0|mushroom/3)/'
+// `polygon/corners:<n>` is step 1 on one large flat polygon, `hole_filling/corners:<n>` CGAL's
+// 3D hole filling on the same outline (what step 1 did before it triangulated flat polygons
+// in their plane).
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -22,13 +25,18 @@
 #include <CGAL/Surface_mesh_parameterization/cut_to_disk.h>
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -177,5 +185,46 @@ BENCHMARK_CAPTURE(ours, bunny00, std::string("bunny00"))->Apply(paths)->Arg(0);
 BENCHMARK_CAPTURE(soup, cow, std::string("cow"))->Apply(paths)->Arg(0)->Arg(3);
 BENCHMARK_CAPTURE(soup, bunny00, std::string("bunny00"))->Apply(paths)->Arg(0);
 BENCHMARK_CAPTURE(soup, mushroom, std::string("mushroom"))->Apply(paths)->Arg(3);
+
+// A CAD cap: a planar gear-like outline of n corners at z = 0.1 (radius 1 or 0.6 alternating,
+// plus uniform noise up to 0.05).
+static std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> cap(std::size_t n)
+{
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> noise(0, 0.05);
+  std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> outline;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const double angle = 2 * CGAL_PI * double(k) / double(n), radius = (k % 2 ? 1. : 0.6) + noise(random);
+    outline.emplace_back(radius * std::cos(angle), radius * std::sin(angle), 0.1);
+  }
+  return outline;
+}
+
+static void polygon(benchmark::State& state)
+{
+  const auto outline = cap(std::size_t(state.range(0)));
+  std::vector<std::size_t> corners(outline.size());
+  for(std::size_t k = 0; k < corners.size(); ++k)
+    corners[k] = k;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(auto _ : state)
+    SMP::internal::Norm_preserving::triangulate_polygon(outline, corners, triangles);
+  state.counters["triangles"] = double(triangles.size());
+}
+BENCHMARK(polygon)->Unit(benchmark::kMillisecond)->ArgName("corners")->Arg(400)->Arg(3200)->Arg(20000);
+
+static void hole_filling(benchmark::State& state)
+{
+  const auto outline = cap(std::size_t(state.range(0)));
+  std::vector<CGAL::Triple<int, int, int> > triangles;
+  for(auto _ : state)
+  {
+    triangles.clear();
+    CGAL::Polygon_mesh_processing::triangulate_hole_polyline(outline, std::back_inserter(triangles));
+  }
+  state.counters["triangles"] = double(triangles.size());
+}
+BENCHMARK(hole_filling)->Unit(benchmark::kMillisecond)->ArgName("corners")->Arg(400)->Arg(1600);
 
 BENCHMARK_MAIN();

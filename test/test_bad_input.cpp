@@ -7,8 +7,11 @@
 
 #include <CGAL/Surface_mesh_parameterization/Combination_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Graph_based_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Two_column_cholesky.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/property_map.h>
 
 #include <gtest/gtest.h>
@@ -20,6 +23,8 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <numeric>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -41,6 +46,8 @@ using np_test::Textured;
 using np_test::Textured_soup;
 using np_test::Vertex;
 using np_test::Polygons;
+
+using Epick_point_3 = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 
 const double nan = std::numeric_limits<double>::quiet_NaN();
 const double inf = std::numeric_limits<double>::infinity();
@@ -460,6 +467,157 @@ TEST(BadInput, PolygonWithARepeatedVertexIsSplitThere)
   Parameterizer parameterizer;
   run.parameterize(parameterizer, first_halfedge(run.mesh));
   expect_failure(run, SMP::ERROR_NON_TRIANGULAR_MESH, "repeated vertex");
+}
+
+// A triangulation of one planar polygon `outline` (step 1), checked without the method that
+// made it: n - 2 triangles, each side of the outline in exactly one and in its direction, each
+// triangle facing like the outline (its normal along the outline's Newell normal), and their
+// areas adding up to the outline's (no two overlap).
+void expect_triangulates_flat(const std::vector<Epick_point_3>& outline, const std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3 Vector_3;
+  const std::size_t n = outline.size();
+  ASSERT_EQ(triangles.size(), n - 2);
+  Vector_3 newell = CGAL::NULL_VECTOR;
+  for(std::size_t k = 0; k < n; ++k)
+    newell = newell + CGAL::cross_product(outline[k] - outline[0], outline[(k + 1) % n] - outline[0]);
+  std::vector<int> sides(n, 0);
+  double covered = 0;
+  for(const auto& t : triangles)
+  {
+    for(std::size_t e = 0; e < 3; ++e)
+      if(t[(e + 1) % 3] == (t[e] + 1) % n) ++sides[t[e]];
+    const Vector_3 normal = CGAL::cross_product(outline[t[1]] - outline[t[0]], outline[t[2]] - outline[t[0]]);
+    EXPECT_GT(normal * newell, 0.);
+    covered += std::sqrt(normal.squared_length());
+  }
+  EXPECT_TRUE(std::all_of(sides.begin(), sides.end(), [](int used) { return used == 1; }));
+  EXPECT_NEAR(covered, std::sqrt(newell.squared_length()), 1e-9 * std::sqrt(newell.squared_length()));
+}
+
+// A gear-like outline of n corners (radius 1 or 0.6 alternating, plus noise up to 0.05) at
+// (x, y) = r (cos, turn sin) of its angle, placed in 3D by `place(x, y)`.
+template <typename Place>
+std::vector<Epick_point_3> gear(std::size_t n, double turn, Place place)
+{
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> noise(0, 0.05);
+  std::vector<Epick_point_3> outline;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const double angle = 2 * CGAL_PI * double(k) / double(n), radius = (k % 2 ? 1. : 0.6) + noise(random);
+    outline.push_back(place(radius * std::cos(angle), turn * radius * std::sin(angle)));
+  }
+  return outline;
+}
+
+TEST(BadInput, LargeFlatPolygonIsTriangulatedInItsPlane)
+{
+  // CAD caps: a gear of 2,000 corners both ways round at z = 0.1, in a tilted plane far from
+  // the origin and in a plane x = const (hole filling's 3D search takes seconds on each,
+  // doc/performance.md); a house of 5 corners; a square with corners along its sides (three
+  // or more in a row); all in the plane, and step 1 takes that triangulation.
+  namespace NP = SMP::internal::Norm_preserving;
+  std::vector<std::vector<Epick_point_3> > outlines;
+  for(double turn : {1., -1.})
+  {
+    outlines.push_back(gear(2000, turn, [](double x, double y) { return Epick_point_3(x, y, 0.1); }));
+    outlines.push_back(gear(2000, turn, [](double x, double y) { return Epick_point_3(1000 + x, 0.3 * x + y, 0.5 * y); }));
+    outlines.push_back(gear(2000, turn, [](double x, double y) { return Epick_point_3(2, x, y); }));
+  }
+  outlines.push_back({{0, 0, 0}, {2, 0, 0}, {2, 0, 1}, {1, 0, 2}, {0, 0, 1}});
+  outlines.emplace_back();
+  for(int side = 0; side < 4; ++side)
+    for(int k = 0; k < 10; ++k)
+    {
+      const double t = side < 2 ? k : 10 - k;
+      outlines.back().emplace_back(side % 2 ? (side < 2 ? 10 : 0) : t, side % 2 ? t : (side < 2 ? 0 : 10), 3);
+    }
+  for(const auto& outline : outlines)
+  {
+    std::vector<std::size_t> polygon(outline.size());
+    std::iota(polygon.begin(), polygon.end(), std::size_t(0));
+    std::vector<std::array<std::size_t, 3> > in_plane, triangles;
+    ASSERT_TRUE(NP::triangulate_in_plane(outline, in_plane)) << outline.size() << " corners from " << outline[0];
+    expect_triangulates_flat(outline, in_plane);
+    NP::triangulate_polygon(outline, polygon, triangles);
+    EXPECT_EQ(triangles, in_plane);
+  }
+  // Scaled by 2^500 or 2^-500 (exactly): the same triangles, no overflow or underflow.
+  const auto& cap = outlines.front();
+  std::vector<std::array<std::size_t, 3> > reference, scaled;
+  NP::triangulate_in_plane(cap, reference);
+  for(int exponent : {500, -500})
+  {
+    std::vector<Epick_point_3> outline;
+    for(const Epick_point_3& p : cap)
+      outline.emplace_back(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent), std::ldexp(p.z(), exponent));
+    EXPECT_TRUE(NP::triangulate_in_plane(outline, scaled)) << exponent;
+    EXPECT_EQ(scaled, reference) << exponent;
+  }
+}
+
+TEST(BadInput, NonFlatOrSelfTouchingPolygonIsHoleFilledIn3D)
+{
+  // Not flat: a crown (z = +-0.3 alternating on a unit circle), also scaled by 10^90. Flat but
+  // not simple in projection: a pentagram, a corner on another side, two corners one above the
+  // other. None is triangulated in the plane; step 1 gives hole filling's triangles for the
+  // crown, and n - 2 triangles for each.
+  namespace NP = SMP::internal::Norm_preserving;
+  std::vector<Epick_point_3> crown, huge_crown, pentagram;
+  for(std::size_t k = 0; k < 12; ++k)
+  {
+    crown.emplace_back(std::cos(CGAL_PI * double(k) / 6), std::sin(CGAL_PI * double(k) / 6), k % 2 ? 0.3 : -0.3);
+    huge_crown.emplace_back(1e90 * crown.back().x(), 1e90 * crown.back().y(), 1e90 * crown.back().z());
+  }
+  for(std::size_t k = 0; k < 5; ++k)
+    pentagram.emplace_back(std::cos(4 * CGAL_PI * double(k) / 5), std::sin(4 * CGAL_PI * double(k) / 5), 0.);
+  std::vector<Epick_point_3> touching = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {2, 0, 0}, {0, 4, 0}};
+  std::vector<Epick_point_3> stacked = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {2, 2, 0.01}, {2, 2, 0}, {0, 4, 0}};
+  std::vector<std::array<std::size_t, 3> > patch;
+  for(const auto* outline : {&crown, &huge_crown, &pentagram, &touching, &stacked})
+  {
+    EXPECT_FALSE(NP::triangulate_in_plane(*outline, patch)) << outline->size() << " corners from " << outline->front();
+    EXPECT_TRUE(patch.empty());
+    std::vector<std::size_t> polygon(outline->size());
+    std::iota(polygon.begin(), polygon.end(), std::size_t(0));
+    NP::triangulate_polygon(*outline, polygon, patch);
+    EXPECT_EQ(patch.size(), outline->size() - 2);
+  }
+  std::vector<CGAL::Triple<int, int, int> > filled;
+  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(crown, std::back_inserter(filled));
+  std::vector<std::array<std::size_t, 3> > expected;
+  for(const auto& t : filled)
+    expected.push_back({std::size_t(t.first), std::size_t(t.second), std::size_t(t.third)});
+  std::vector<std::size_t> polygon(crown.size());
+  std::iota(polygon.begin(), polygon.end(), std::size_t(0));
+  NP::triangulate_polygon(crown, polygon, patch);
+  EXPECT_EQ(patch, expected);
+}
+
+TEST(BadInput, PrismWithLargeFlatCapsIsOneComponent)
+{
+  // A prism whose two caps are flat gears of 500 corners: 1,000 vertices, one component, and
+  // no vertex added: its edges are the 2 x 500 sides of the caps, the 2 x 497 diagonals of
+  // their triangulations, and the 500 upright sides and 500 diagonals of the quads.
+  const std::size_t n = 500;
+  const auto cap = gear(n, 1., [](double x, double y) { return Epick_point_3(x, y, 0); });
+  std::vector<Point_3> points;
+  for(double z : {0., 2.})
+    for(const Epick_point_3& p : cap)
+      points.emplace_back(p.x(), p.y(), z);
+  Polygons polygons(2);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    polygons[0].push_back(n - 1 - k);
+    polygons[1].push_back(n + k);
+    polygons.push_back({k, (k + 1) % n, n + (k + 1) % n, n + k});
+  }
+  const Textured_soup soup(points, polygons);
+  ASSERT_EQ(soup.status, SMP::OK) << soup.report.message;
+  ASSERT_EQ(soup.report.reports.size(), 1u);
+  EXPECT_EQ(soup.report.reports[0].edges, 2 * n + 2 * (n - 3) + 2 * n);
+  EXPECT_TRUE(std::none_of(soup.uv.begin(), soup.uv.end(), [](const Point_2& p) { return p == sentinel; }));
 }
 
 TEST(BadInput, SoupFacesOfTwoVerticesAreEdgesAndMissingVerticesAreRefused)
