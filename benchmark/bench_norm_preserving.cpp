@@ -10,9 +10,9 @@
 // (texture_polygon_soup) on the same vertices and triangles as `ours` (the parameterizer on
 // the Surface_mesh), for the comparison of the two paths:
 //   bench_norm_preserving --benchmark_filter='(ours|soup)/(cow/(0|3)|bunny00/0|mushroom/3)/'
-// `polygon/corners:<n>` is step 1 on one large flat polygon, `hole_filling/corners:<n>` CGAL's
-// 3D hole filling on the same outline (what step 1 did before it triangulated flat polygons
-// in their plane).
+// `polygon/corners:<n>/wave:<0|1>` is step 1 on one large polygon, flat or not,
+// `hole_filling/corners:<n>/wave:<0|1>` CGAL's 3D hole filling on the same outline (what step 1
+// did before it triangulated polygons in their plane).
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -186,9 +186,9 @@ BENCHMARK_CAPTURE(soup, cow, std::string("cow"))->Apply(paths)->Arg(0)->Arg(3);
 BENCHMARK_CAPTURE(soup, bunny00, std::string("bunny00"))->Apply(paths)->Arg(0);
 BENCHMARK_CAPTURE(soup, mushroom, std::string("mushroom"))->Apply(paths)->Arg(3);
 
-// A CAD cap: a planar gear-like outline of n corners at z = 0.1 (radius 1 or 0.6 alternating,
-// plus uniform noise up to 0.05).
-static std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> cap(std::size_t n)
+// A CAD cap: a gear-like outline of n corners at z = 0.1 (radius 1 or 0.6 alternating, plus
+// uniform noise up to 0.05), flat or (`wave`) with z waving by +-0.1 three times around.
+static std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> cap(std::size_t n, bool wave)
 {
   std::mt19937 random(1);
   std::uniform_real_distribution<double> noise(0, 0.05);
@@ -196,14 +196,14 @@ static std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>
   for(std::size_t k = 0; k < n; ++k)
   {
     const double angle = 2 * CGAL_PI * double(k) / double(n), radius = (k % 2 ? 1. : 0.6) + noise(random);
-    outline.emplace_back(radius * std::cos(angle), radius * std::sin(angle), 0.1);
+    outline.emplace_back(radius * std::cos(angle), radius * std::sin(angle), 0.1 + (wave ? 0.1 * std::sin(3 * angle) : 0.));
   }
   return outline;
 }
 
 static void polygon(benchmark::State& state)
 {
-  const auto outline = cap(std::size_t(state.range(0)));
+  const auto outline = cap(std::size_t(state.range(0)), state.range(1) != 0);
   std::vector<std::size_t> corners(outline.size());
   for(std::size_t k = 0; k < corners.size(); ++k)
     corners[k] = k;
@@ -212,11 +212,11 @@ static void polygon(benchmark::State& state)
     SMP::internal::Norm_preserving::triangulate_polygon(outline, corners, triangles);
   state.counters["triangles"] = double(triangles.size());
 }
-BENCHMARK(polygon)->Unit(benchmark::kMillisecond)->ArgName("corners")->Arg(400)->Arg(3200)->Arg(20000);
+BENCHMARK(polygon)->Unit(benchmark::kMillisecond)->ArgNames({"corners", "wave"})->ArgsProduct({{400, 3200, 20000}, {0, 1}});
 
 static void hole_filling(benchmark::State& state)
 {
-  const auto outline = cap(std::size_t(state.range(0)));
+  const auto outline = cap(std::size_t(state.range(0)), state.range(1) != 0);
   std::vector<CGAL::Triple<int, int, int> > triangles;
   for(auto _ : state)
   {
@@ -225,6 +225,6 @@ static void hole_filling(benchmark::State& state)
   }
   state.counters["triangles"] = double(triangles.size());
 }
-BENCHMARK(hole_filling)->Unit(benchmark::kMillisecond)->ArgName("corners")->Arg(400)->Arg(1600);
+BENCHMARK(hole_filling)->Unit(benchmark::kMillisecond)->ArgNames({"corners", "wave"})->ArgsProduct({{100, 400, 1600}, {0, 1}});
 
 BENCHMARK_MAIN();

@@ -65,12 +65,13 @@ inline void simple_loops(const std::vector<std::size_t>& corners, std::vector<st
     loops.push_back(rest);
 }
 
-// The outline projected into its plane, the coordinates as they are: where every corner lies
-// within 1% of the outline's bounding-box diagonal from the plane through its centroid normal
-// to its Newell normal, the two coordinates other than the normal's dominant one, in cyclic
-// order (x, y for z; y, z for x; z, x for y). Returns false where the outline is not flat.
-inline bool flat_projection(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& outline,
-                            std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_2>& projection)
+// The outline projected along the dominant axis of its Newell normal, the coordinates as they
+// are: the two other coordinates, in cyclic order (x, y for z; y, z for x; z, x for y).
+// Returns false where the normal is zero or, with `flat_only`, where a corner lies farther than
+// 1% of the outline's bounding-box diagonal from the plane through its centroid normal to it.
+inline bool projection_along_normal(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& outline,
+                                    bool flat_only,
+                                    std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_2>& projection)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3 Vector_3;
   const std::size_t n = outline.size();
@@ -95,7 +96,7 @@ inline bool flat_projection(const std::vector<CGAL::Exact_predicates_inexact_con
   if(!(length > 0) || !std::isfinite(length))
     return false;
   for(const Vector_3& d : offset)
-    if(!(std::abs(d * normal) <= 0.01 * scale * diagonal * length))
+    if(flat_only && !(std::abs(d * normal) <= 0.01 * scale * diagonal * length))
       return false;
   int axis = 0;
   for(int k = 1; k < 3; ++k)
@@ -106,11 +107,17 @@ inline bool flat_projection(const std::vector<CGAL::Exact_predicates_inexact_con
   return true;
 }
 
-// The triangulation of a flat outline in its plane, as triples of indices into `outline`, each
-// oriented like the outline: where flat_projection() applies and the projection is a simple
-// polygon (exact predicates: distinct points, no side touching another), the constrained
-// Delaunay triangulation of the projection inside it. Returns false, with `patch` empty, where
-// that does not apply (decisions.md, "Step 1 in the plane of a flat polygon").
+// Outlines of more corners than this are triangulated in projection even where they are not
+// flat: hole filling's search grows as n^3 on them (decisions.md, "Step 1 in the plane of a
+// flat polygon").
+constexpr std::size_t projected_outline_corners = 100;
+
+// The triangulation of an outline in its plane, as triples of indices into `outline`, each
+// oriented like the outline: where projection_along_normal() applies (the outline flat, or of
+// more than projected_outline_corners corners) and the projection is a simple polygon (exact
+// predicates: distinct points, no side touching another), the constrained Delaunay
+// triangulation of the projection inside it. Returns false, with `patch` empty, where that
+// does not apply.
 inline bool triangulate_in_plane(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& outline,
                                  std::vector<std::array<std::size_t, 3> >& patch)
 {
@@ -121,7 +128,8 @@ inline bool triangulate_in_plane(const std::vector<CGAL::Exact_predicates_inexac
                                                      CGAL::No_constraint_intersection_tag> Cdt;
   patch.clear();
   std::vector<K::Point_2> projection;
-  if(!flat_projection(outline, projection) || !CGAL::is_simple_2(projection.begin(), projection.end(), K()))
+  if(!projection_along_normal(outline, outline.size() <= projected_outline_corners, projection) ||
+     !CGAL::is_simple_2(projection.begin(), projection.end(), K()))
     return false;
   const std::size_t n = outline.size();
   const bool clockwise = CGAL::orientation_2(projection.begin(), projection.end(), K()) == CGAL::CLOCKWISE;
@@ -163,7 +171,7 @@ inline bool triangulate_in_plane(const std::vector<CGAL::Exact_predicates_inexac
 
 // Step 1 for one polygon, adding no vertex: a triangle as it is; a quad split along the
 // diagonal whose two triangles' normals agree best (as Polygon_mesh_processing::
-// triangulate_faces() does); a larger polygon in its plane where it is flat and simple there
+// triangulate_faces() does); a larger polygon in its plane where that applies
 // (triangulate_in_plane()), otherwise by hole filling (triangulate_hole_polyline()) or, where
 // neither finds a complete triangulation (a degenerate outline), by a fan from its first
 // vertex. Not triangulate_faces() itself: on a polygon whose projection crosses itself its
