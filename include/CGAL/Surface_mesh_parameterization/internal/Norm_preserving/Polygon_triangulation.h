@@ -95,9 +95,10 @@ inline bool projection_along_normal(const std::vector<CGAL::Exact_predicates_ine
   const double length = std::sqrt(normal.squared_length());
   if(!(length > 0) || !std::isfinite(length))
     return false;
-  for(const Vector_3& d : offset)
-    if(flat_only && !(std::abs(d * normal) <= 0.01 * scale * diagonal * length))
-      return false;
+  if(flat_only)
+    for(const Vector_3& d : offset)
+      if(!(std::abs(d * normal) <= 0.01 * scale * diagonal * length))
+        return false;
   int axis = 0;
   for(int k = 1; k < 3; ++k)
     if(std::abs(normal[k]) > std::abs(normal[axis])) axis = k;
