@@ -138,12 +138,13 @@ INSTANTIATE_TEST_SUITE_P(Suite, RealMesh,
                     "knot1", "eight", "elephant",   // genus 1, 2, 3
                     "holes", "lion"));              // several border loops
 
-// The exact mode: certified within 1e-9 of the optimum, which the interior point confirms. On
-// nefertiti, cow and mushroom the optimum on the active set found where the default stops is
-// certified at once: no iteration beyond the default's.
+// The exact mode: certified within 1e-9 of the optimum, which the interior point confirms. The
+// active-set polish from the point where the default stops certifies there: no iteration beyond
+// the default's (on lion only since its polish ignores round-off turns: it churned before; man's
+// polish has over 25,000 unknowns, CHOLMOD's factorization where configured).
 TEST(NormPreservingADMMSolver, CertifiedModeReachesTheOptimum)
 {
-  for(const std::string name : {"nefertiti", "cow", "mushroom", "knot1"})
+  for(const std::string name : {"nefertiti", "cow", "mushroom", "knot1", "lion", "man"})
   {
     Mapped_mesh run(np_test::load_mesh(name)), exact(np_test::load_mesh(name)), fast(np_test::load_mesh(name));
     const Halfedge h = *halfedges(run.mesh).begin();
@@ -160,10 +161,7 @@ TEST(NormPreservingADMMSolver, CertifiedModeReachesTheOptimum)
     EXPECT_EQ(run.report.max_constraint_violation, 0.) << name;
     EXPECT_LE(run.report.optimality_gap, 1e-9) << name;
     EXPECT_NEAR(run.report.objective, exact.report.objective, 1e-8 * exact.report.objective) << name;
-    if(name != "knot1")
-    {
-      EXPECT_EQ(run.report.solver_iterations, fast.report.solver_iterations) << name;
-    }
+    EXPECT_EQ(run.report.solver_iterations, fast.report.solver_iterations) << name;
   }
 }
 

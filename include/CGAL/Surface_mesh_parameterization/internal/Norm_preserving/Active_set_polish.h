@@ -23,6 +23,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
 #include <Eigen/SparseCholesky>
 
@@ -38,6 +39,48 @@ namespace internal {
 namespace Norm_preserving {
 
 using Active_set = std::vector<std::array<char, 2> >; // per edge and coordinate: at equality
+
+// The factorization of the polish's regularized normal equations: Eigen's simplicial LDL' in
+// AMD order, or from 25,000 unknowns CHOLMOD's supernodal Cholesky when the package is
+// configured with it (several times faster there, slower below: doc/performance.md).
+class Regularized_normal_cholesky
+{
+public:
+  // False if the matrix (lower triangle) is not positive definite.
+  bool compute(const Sparse_matrix& lower)
+  {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    m_large = lower.rows() >= 25000;
+    if(m_large)
+    {
+      cholmod_common& common = m_cholmod.cholmod();
+      common.print = 0;
+      common.nmethods = 1; // AMD only: METIS keeps a global random state (Two_column_cholesky.h)
+      common.method[0].ordering = CHOLMOD_AMD;
+      m_cholmod.compute(lower);
+      return m_cholmod.info() == Eigen::Success;
+    }
+#endif
+    m_ldlt.compute(lower);
+    return m_ldlt.info() == Eigen::Success && (m_ldlt.vectorD().array() > 0).all();
+  }
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const
+  {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    if(m_large)
+      return m_cholmod.solve(b);
+#endif
+    return m_ldlt.solve(b);
+  }
+
+private:
+  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> m_ldlt;
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+  Sparse_cholesky m_cholmod;
+  bool m_large = false;
+#endif
+};
 
 // The solution of Eq. 5 with the constraints of `active` as equalities nearest to `start`,
 // written to `uv`, and its multipliers to `y` (per edge, for a and b), those of the active
@@ -131,10 +174,10 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
   const double eps = 1e-9 * diagonal_sum / (std::max)(1, unknowns);
   for(int k = 0; k < unknowns; ++k)
     triplets.emplace_back(k, k, eps);
-  Eigen::SparseMatrix<double> normal(unknowns, unknowns);
+  Sparse_matrix normal(unknowns, unknowns);
   normal.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(normal);
-  if(ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0).any())
+  Regularized_normal_cholesky ldlt;
+  if(!ldlt.compute(normal))
     return false;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(unknowns), members = Eigen::VectorXd::Zero(unknowns);
   for(int c = 0; c < 2; ++c)

@@ -24,8 +24,9 @@
 // stop, the bound is computed every 25 iterations, and the exact optimum on the active set
 // ADMM has found (Active_set_polish.h, whose multipliers make the bound tight) is tried then,
 // and again each time the iteration count has doubled, three times at most: each try corrects
-// the active set up to 8 times (one factorization each), which settles within a few rounds
-// on small meshes and may not at all on large ones (doc/performance.md, change 7).
+// the active set up to 12 times (one factorization each), turning only constraints violated,
+// or of negative multiplier, beyond round-off: it settles at the default's stopping point on
+// every mesh of the suite (doc/performance.md, change 8).
 //
 // Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
 // edge loops run in blocks of edges, the right-hand side is gathered per free vertex
@@ -61,6 +62,11 @@ namespace internal {
 namespace Norm_preserving {
 
 constexpr double admm_default_tolerance = 2.5e-5; // of Norm_preserving_ADMM_solver
+// The active-set polish of the certified mode turns a constraint only when it is violated, or
+// its multiplier negative, by more than `polish_turn_tolerance` (in units of the mean L1 edge
+// length), and corrects the active set at most `polish_rounds` times a try.
+constexpr double polish_turn_tolerance = 1e-9;
+constexpr int polish_rounds = 12;
 
 struct Admm_settings
 {
@@ -229,7 +235,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     UV_vector candidate;
     std::vector<std::array<double, 2> > y;
     const std::vector<std::array<double, 2> > estimate = multipliers();
-    for(int round = 0; round < 8; ++round)
+    for(int round = 0; round < polish_rounds; ++round)
     {
       const UV_vector start = round == 0 ? uv : candidate; // the last ADMM iterate, then the last candidate
       if(!solve_on_active_set(geometry, lengths, signs, fixed, active, start, estimate, candidate, y))
@@ -247,14 +253,17 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
         gap_is_current = true;
         return true;
       }
-      bool changed = false; // violated constraints join the active set, negative multipliers leave it
+      // Violated constraints join the active set, negative multipliers leave it; both beyond
+      // round-off, or degenerate constraints (zero value and multiplier at the optimum) turn
+      // back and forth every round.
+      bool changed = false;
       for(std::size_t e = 0; e < m; ++e)
       {
         const double r = sign_constrained_residual(geometry, lengths, signs, candidate, e);
         for(int c = 0; c < 2; ++c)
         {
-          const bool turn = active[e][c] ? -2. * r - y[e][c] < 0
-                                         : sign_constraint_value(geometry, signs, candidate, e, c) < 0;
+          const bool turn = active[e][c] ? -2. * r - y[e][c] < -polish_turn_tolerance
+                                         : sign_constraint_value(geometry, signs, candidate, e, c) < -polish_turn_tolerance;
           active[e][c] = char(active[e][c] != turn);
           changed = changed || turn;
         }
