@@ -35,8 +35,9 @@ namespace Surface_mesh_parameterization {
 ///   extrapolated from the last iterations, is at most `tolerance` (relative);
 /// - `certified()`, the exact mode: the solve stops only when the certified gap is at most
 ///   `tolerance` (default 1e-9); from where the default would stop, it also tries the exact
-///   optimum on the set of constraints the iterations have made active, which certifies at
-///   once on small meshes (on large ones the interior point is faster: doc/benchmarks.md).
+///   optimum on the set of constraints the iterations have made active, corrected a few
+///   times, which certifies there on 34 of the 35 benchmark meshes of up to 50,000 vertices
+///   (from 150,000 vertices on, the interior point is faster: doc/benchmarks.md).
 ///
 /// With the default time limit (none) the result depends on the input only, bit for bit.
 ///
