@@ -7,7 +7,7 @@
 // vertices into clusters that share one value, and Eq. 5 with the active constraints as
 // equalities is an unconstrained least-squares problem in the clusters' values (a cluster
 // holding a fixed vertex takes its value). Its normal equations, coupled in u and v through
-// the residuals, are factored once (Eigen's simplicial LDL', AMD order); they are singular
+// the residuals, are factored once (Regularized_normal_cholesky, below); they are singular
 // where the optimum is not unique, and proximal steps pick the optimum nearest the start.
 //
 // The multipliers follow from the solution: on an inactive constraint the gradient of the
