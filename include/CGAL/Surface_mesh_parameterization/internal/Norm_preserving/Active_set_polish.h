@@ -50,7 +50,7 @@ public:
   bool compute(const Sparse_matrix& lower)
   {
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-    m_large = lower.rows() >= 25000;
+    m_large = std::size_t(lower.rows()) >= cholmod_minimum_rows;
     if(m_large)
     {
       cholmod_common& common = m_cholmod.cholmod();
@@ -176,8 +176,8 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
     triplets.emplace_back(k, k, eps);
   Sparse_matrix normal(unknowns, unknowns);
   normal.setFromTriplets(triplets.begin(), triplets.end());
-  Regularized_normal_cholesky ldlt;
-  if(!ldlt.compute(normal))
+  Regularized_normal_cholesky cholesky;
+  if(!cholesky.compute(normal))
     return false;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(unknowns), members = Eigen::VectorXd::Zero(unknowns);
   for(int c = 0; c < 2; ++c)
@@ -190,7 +190,7 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
   x = x.cwiseQuotient(members);
   for(int step = 0; step < 4; ++step)
   {
-    const Eigen::VectorXd next = ldlt.solve(rhs + eps * x);
+    const Eigen::VectorXd next = cholesky.solve(rhs + eps * x);
     if(!next.allFinite())
       return false;
     const bool still = (next - x).lpNorm<Eigen::Infinity>() <= 1e-15 * (1. + x.lpNorm<Eigen::Infinity>());

@@ -13,12 +13,18 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#include <cstddef>
+
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
 
 using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// Below this many rows Eigen's simplicial factorizations are faster than CHOLMOD's supernodal
+// one (doc/performance.md, change 7); the ADMM's Laplacian and the polish's system switch here.
+constexpr std::size_t cholmod_minimum_rows = 25000;
 
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
 using Sparse_cholesky = Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower>;

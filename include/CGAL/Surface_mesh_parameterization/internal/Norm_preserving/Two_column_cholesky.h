@@ -112,13 +112,12 @@ public:
 
 private:
   static constexpr std::size_t part_count = 4;
-  static constexpr std::size_t simplicial_size = 25000; // with CHOLMOD, smaller matrices go to Eigen
 
   bool factor(const Sparse_matrix& lower)
   {
     m_n = std::size_t(lower.rows());
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-    if(m_n < simplicial_size) // METIS's analysis and the supernodal BLAS calls cost more than they save
+    if(m_n < cholmod_minimum_rows) // METIS's analysis and the supernodal BLAS calls cost more than they save
       return factor_simplicial(lower);
     struct Cholmod // frees the factor and the workspace on every way out
     {
