@@ -54,6 +54,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -64,9 +65,14 @@ namespace Norm_preserving {
 constexpr double admm_default_tolerance = 2.5e-5; // of Norm_preserving_ADMM_solver
 // The active-set polish of the certified mode turns a constraint only when it is violated, or
 // its multiplier negative, by more than `polish_turn_tolerance` (in units of the mean L1 edge
-// length), and corrects the active set at most `polish_rounds` times a try.
+// length), and corrects the active set at most `polish_rounds` times a try. When a round
+// wants more than `polish_shrink` times the turns the round before wanted, the turns a round
+// are limited to half of those, the most wrong first; a try ends when a round wants more than
+// `polish_growth_limit` times the fewest turns wanted so far (doc/performance.md, change 9).
 constexpr double polish_turn_tolerance = 1e-9;
-constexpr int polish_rounds = 12;
+constexpr int polish_rounds = 24;
+constexpr double polish_shrink = 0.7;
+constexpr std::size_t polish_growth_limit = 2;
 
 struct Admm_settings
 {
@@ -235,6 +241,9 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     UV_vector candidate;
     std::vector<std::array<double, 2> > y;
     const std::vector<std::array<double, 2> > estimate = multipliers();
+    std::vector<std::pair<double, std::size_t> > wrong; // (minus how wrong, 2 e + c)
+    std::size_t wanted = 0, fewest = std::numeric_limits<std::size_t>::max(),
+                limit = std::numeric_limits<std::size_t>::max(); // turns a round
     for(int round = 0; round < polish_rounds; ++round)
     {
       const UV_vector start = round == 0 ? uv : candidate; // the last ADMM iterate, then the last candidate
@@ -255,21 +264,32 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
       }
       // Violated constraints join the active set, negative multipliers leave it; both beyond
       // round-off, or degenerate constraints (zero value and multiplier at the optimum) turn
-      // back and forth every round.
-      bool changed = false;
+      // back and forth every round. Once the corrections stop shrinking, only the most wrong
+      // turn; a try whose corrections grow is abandoned.
+      wrong.clear();
       for(std::size_t e = 0; e < m; ++e)
       {
         const double r = sign_constrained_residual(geometry, lengths, signs, candidate, e);
         for(int c = 0; c < 2; ++c)
         {
-          const bool turn = active[e][c] ? -2. * r - y[e][c] < -polish_turn_tolerance
-                                         : sign_constraint_value(geometry, signs, candidate, e, c) < -polish_turn_tolerance;
-          active[e][c] = char(active[e][c] != turn);
-          changed = changed || turn;
+          const double amount = active[e][c] ? 2. * r + y[e][c] : -sign_constraint_value(geometry, signs, candidate, e, c);
+          if(amount > polish_turn_tolerance)
+            wrong.emplace_back(-amount, 2 * e + std::size_t(c));
         }
       }
-      if(!changed)
+      fewest = (std::min)(fewest, wrong.size());
+      if(wrong.empty() || wrong.size() > polish_growth_limit * fewest)
         return false;
+      if(round > 0 && double(wrong.size()) > polish_shrink * double(wanted))
+        limit = (std::max)(std::size_t(1), (std::min)(limit, wanted / 2));
+      wanted = wrong.size();
+      if(wanted > limit)
+      {
+        std::sort(wrong.begin(), wrong.end()); // the most wrong first, then by index
+        wrong.resize(limit);
+      }
+      for(const auto& turn : wrong)
+        active[turn.second / 2][turn.second % 2] ^= 1;
     }
     return false;
   };
