@@ -165,6 +165,27 @@ TEST(NormPreservingADMMSolver, CertifiedModeReachesTheOptimum)
   }
 }
 
+// An optimum of zero (CGAL's open cylinder: every L1 length can be met) is approached
+// geometrically without end: both modes stop once the objective is below the gap's floor, and
+// certify it (the default ran into its 20,000-iteration limit before).
+TEST(NormPreservingADMMSolver, StopsAndCertifiesAtAZeroOptimum)
+{
+  for(const bool certified : {false, true})
+  {
+    Mapped_mesh run(np_test::load_mesh("cylinder"));
+    Parameterizer parameterizer(SMP::XY_min_max_initial_guess(),
+                                certified ? SMP::Norm_preserving_ADMM_solver::certified() : SMP::Norm_preserving_ADMM_solver());
+    parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
+    run.parameterize(parameterizer, *halfedges(run.mesh).begin());
+    ASSERT_EQ(run.status, SMP::OK) << run.report.message;
+    EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << certified;
+    EXPECT_LT(run.report.solver_iterations, 5000) << certified; // of a limit of 20,000
+    EXPECT_LE(run.report.optimality_gap, certified ? 1e-9 : 1e-4) << certified;
+    EXPECT_LE(run.report.objective, 1e-12 * run.report.initial_objective) << certified;
+    EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective) << certified;
+  }
+}
+
 // On its iteration limit the solver says so and still returns a feasible point.
 TEST(NormPreservingADMMSolver, ReportsTheIterationLimitWithAFeasiblePoint)
 {

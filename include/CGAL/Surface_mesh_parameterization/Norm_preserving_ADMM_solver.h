@@ -32,7 +32,8 @@ namespace Surface_mesh_parameterization {
 ///
 /// Two modes:
 /// - by default, the solve stops when the decrease of the objective still to come,
-///   extrapolated from the last iterations, is at most `tolerance` (relative);
+///   extrapolated from the last iterations, is at most `tolerance` (relative to the
+///   objective, or near a zero optimum to 1e-12 times the objective of the zero map);
 /// - `certified()`, the exact mode: the solve stops only when the certified gap is at most
 ///   `tolerance` (default 1e-9); from where the default would stop, it also tries the exact
 ///   optimum on the set of constraints the iterations have made active, corrected a few

@@ -71,8 +71,9 @@ struct Norm_preserving_report
   int solver_iterations = 0;           ///< iterations of the QP solver
   double kkt_residual = 0;             ///< largest residual the solver reports on the normalized QP (edge lengths ~ 1)
   /// a certified upper bound on the relative distance `(f - f*) / f*` of the QP solution's
-  /// objective to the optimum of the QP (before the refinements); 0 where there is nothing to
-  /// solve, infinity for a solver that certifies nothing
+  /// objective to the optimum of the QP (before the refinements; near a zero optimum, relative
+  /// to 1e-12 times the objective of the zero map); 0 where there is nothing to solve,
+  /// infinity for a solver that certifies nothing
   double optimality_gap = std::numeric_limits<double>::infinity();
   int sign_refinement_rounds = 0;      ///< rounds of sign refinement kept (each lowered Eq. 3)
   /// Eq. 3 at the QP solution, then after each round kept: non-increasing; empty when the

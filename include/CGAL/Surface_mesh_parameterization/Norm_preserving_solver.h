@@ -53,8 +53,9 @@ struct Norm_preserving_solve_report
   bool has_statistics = false;      ///< whether the solver reported the two fields below
   int iterations = 0;               ///< iterations of the solver
   double kkt_residual = 0;          ///< largest residual the solver reports
-  /// a certified upper bound on `(f - f*) / f*`, `f` the objective of the solution and `f*`
-  /// the optimum (from a duality gap); infinity if the solver certifies nothing
+  /// a certified upper bound on `(f - f*) / max(f*, 1e-12 f0)`, `f` the objective of the
+  /// solution, `f*` the optimum and `f0` that of the zero map (from a duality gap); infinity
+  /// if the solver certifies nothing
   double optimality_gap = std::numeric_limits<double>::infinity();
   double assembly_seconds = 0;      ///< setting up the linear algebra
   double factorization_seconds = 0; ///< factorizations done before iterating

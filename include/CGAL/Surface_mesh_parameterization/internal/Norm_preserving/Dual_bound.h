@@ -85,14 +85,18 @@ inline double sign_constrained_dual_bound(const Norm_preserving_geometry& geomet
   return bound;
 }
 
-// An upper bound on (f - f*) / f* from the objective f of a feasible point and a lower bound
-// on the optimum f*: 0 when they meet. An optimum near zero is measured against 1e-12 times
-// `scale` (the objective of the zero map, sum of l_e^2), not against itself.
+// An objective below `gap_floor` times the objective of the zero map (sum of l_e^2) counts as
+// zero: gaps near a zero optimum are measured against that, not against the optimum itself.
+constexpr double gap_floor = 1e-12;
+
+// An upper bound on (f - f*) / max(f*, gap_floor * `scale`) from the objective f of a feasible
+// point and a lower bound on the optimum f* (and 0, f being a sum of squares): 0 when they meet.
 inline double relative_gap(double objective, double lower_bound, double scale)
 {
+  lower_bound = (std::max)(lower_bound, 0.);
   if(!(objective > lower_bound))
     return 0.;
-  return (objective - lower_bound) / (std::max)(lower_bound, 1e-12 * scale);
+  return (objective - lower_bound) / (std::max)(lower_bound, gap_floor * scale);
 }
 
 } // namespace Norm_preserving

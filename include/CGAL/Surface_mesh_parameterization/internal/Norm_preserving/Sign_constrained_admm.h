@@ -16,17 +16,19 @@
 // behind both: doc/performance.md, change 3). Every 5 iterations the mesh step is mapped onto
 // the feasible set by Sign_feasible_projection and its objective f recorded. The decrease of f
 // is close to geometric: the rule stops when the decrease still to come, extrapolated from the
-// last two decreases (d2 r / (1 - r), r = d2 / d1), is at most the tolerance times f at two
-// checks in a row (doc/performance.md, change 7). The returned point is the last feasible one,
+// last two decreases (d2 r / (1 - r), r = d2 / d1), is at most the tolerance times f (or the
+// gap's floor, Dual_bound.h, near a zero optimum) at two checks in a row (doc/performance.md,
+// change 7; doc/decisions.md). The returned point is the last feasible one,
 // so it satisfies every constraint exactly, and its distance to the optimum is certified by a
 // dual bound from the multipliers (Dual_bound.h). In the certified mode the solve goes on until
 // that certificate itself is at most the tolerance: from the point where the default rule would
 // stop, the bound is computed every 25 iterations, and the exact optimum on the active set
 // ADMM has found (Active_set_polish.h, whose multipliers make the bound tight) is tried then,
 // and again each time the iteration count has doubled, three times at most: each try corrects
-// the active set up to 12 times (one factorization each), turning only constraints violated,
-// or of negative multiplier, beyond round-off: it settles at the default's stopping point on
-// 34 of the 35 benchmark meshes of up to 50,000 vertices (doc/performance.md, change 8).
+// the active set up to 24 times (one factorization each), turning only constraints violated,
+// or of negative multiplier, beyond round-off, and fewer at a time once the corrections stop
+// shrinking: it settles at the default's stopping point on 34 of the 35 benchmark meshes of up
+// to 50,000 vertices, and on cow x3 (doc/performance.md, changes 8 and 9).
 //
 // Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
 // edge loops run in blocks of edges, the right-hand side is gathered per free vertex
@@ -121,20 +123,22 @@ inline std::array<double, 2> edge_step(double l, double ca, double cb, double rh
 
 // The stopping rule: fed the objective of the feasible point at successive checks, says when
 // the decrease still to come, extrapolated geometrically from the last two decreases, has
-// been at most `tolerance` times the objective at two checks in a row.
+// been at most `tolerance` times the objective (or `floor`, if larger: an optimum of zero is
+// approached geometrically without end) at two checks in a row.
 class Extrapolated_stop
 {
 public:
-  explicit Extrapolated_stop(double tolerance) : m_tolerance(tolerance) { }
+  Extrapolated_stop(double tolerance, double floor) : m_tolerance(tolerance), m_floor(floor) { }
 
   bool settled(double objective)
   {
     const double before = m_older - m_old, last = m_old - objective; // NaN at the first checks
-    bool small = last == 0 && before >= 0;
+    const double allowed = m_tolerance * (std::max)(objective, m_floor);
+    bool small = (last == 0 && before >= 0) || objective <= allowed;
     if(last > 0 && before > last)
     {
       const double ratio = last / before;
-      small = last * ratio / (1. - ratio) <= m_tolerance * objective;
+      small = small || last * ratio / (1. - ratio) <= allowed;
     }
     m_passed = small ? m_passed + 1 : 0;
     m_older = m_old;
@@ -143,7 +147,7 @@ public:
   }
 
 private:
-  double m_tolerance;
+  double m_tolerance, m_floor;
   double m_older = std::numeric_limits<double>::quiet_NaN(), m_old = std::numeric_limits<double>::quiet_NaN();
   int m_passed = 0;
 };
@@ -215,13 +219,13 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   std::vector<double> block_primal((m + block - 1) / block);
   UV_vector feasible;          // the last iterate swept onto the feasible set
   double objective = 0;        // its objective
-  Extrapolated_stop stop(settings.certified ? admm_default_tolerance : settings.tolerance);
+  const double scale = l1_norm * l1_norm;
+  Extrapolated_stop stop(settings.certified ? admm_default_tolerance : settings.tolerance, gap_floor * scale);
   bool settled = false;        // the certified mode: the rule has stopped once
   int certified_at = 0;        // the iteration of the last certificate
   int next_polish = 0;         // the certified mode: the iteration of the next polish,
   int polishes_left = 3;       // and how many more may be tried
   bool gap_is_current = false; // result.gap is that of `feasible`
-  const double scale = l1_norm * l1_norm;
   auto multipliers = [&]() { // of the constraints a, b >= 0, from the scaled ones
     std::vector<std::array<double, 2> > y(w);
     for(auto& v : y)
