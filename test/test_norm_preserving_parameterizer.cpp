@@ -13,6 +13,7 @@
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -342,6 +343,42 @@ TEST(TwoColumnCholesky, SolvesLikeEigenAndSplitsLargeFactors)
         difference = std::max(difference, std::abs(interleaved[2 * i + std::size_t(c)] - x(Eigen::Index(i), c)));
     EXPECT_LT(difference, 1e-9 * x.cwiseAbs().maxCoeff()) << name;
   }
+}
+
+// A dense matrix is one run of columns with the same rows: solved by supernodes of at most 32
+// columns (4 for 100 rows), as Eigen's LDL' solves it; a mesh Laplacian has runs too.
+TEST(TwoColumnCholesky, SolvesByRunsOfColumns)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  const int n = 100;
+  Eigen::MatrixXd dense(n, n);
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      dense(i, j) = (i == j ? n : 0.) + std::cos(double(i + 1) * double(j + 1));
+  dense = (dense * dense.transpose()).eval();
+  NP::Sparse_matrix lower(n, n);
+  std::vector<Eigen::Triplet<double> > entries;
+  for(int j = 0; j < n; ++j)
+    for(int i = j; i < n; ++i)
+      entries.emplace_back(i, j, dense(i, j));
+  lower.setFromTriplets(entries.begin(), entries.end());
+  NP::Two_column_cholesky cholesky;
+  ASSERT_TRUE(cholesky.compute(lower));
+  EXPECT_EQ(cholesky.supernode_count(), 4u);
+  std::vector<double> interleaved(2 * n);
+  Eigen::MatrixXd b(n, 2);
+  for(int i = 0; i < n; ++i)
+    for(int c = 0; c < 2; ++c)
+      interleaved[std::size_t(2 * i + c)] = b(i, c) = std::sin(0.37 * double(2 * i + c));
+  cholesky.solve(interleaved);
+  const Eigen::MatrixXd x = dense.ldlt().solve(b);
+  for(int i = 0; i < n; ++i)
+    for(int c = 0; c < 2; ++c)
+      EXPECT_NEAR(interleaved[std::size_t(2 * i + c)], x(i, c), 1e-12 * x.cwiseAbs().maxCoeff());
+
+  const NP::Sparse_matrix laplacian = free_laplacian(np_test::load_mesh("cow"));
+  ASSERT_TRUE(cholesky.compute(laplacian));
+  EXPECT_LT(cholesky.supernode_count(), std::size_t(laplacian.rows()) * 3 / 4);
 }
 
 // One thread or several: the same uvs, bit for bit (the solve of bunny00 is split into parts).
