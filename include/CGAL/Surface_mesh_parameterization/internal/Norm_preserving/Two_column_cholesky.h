@@ -14,9 +14,9 @@
 // choices are in doc/performance.md.
 //
 // The solve goes through the factor by supernodes: runs of consecutive columns with the same
-// rows below them (up to `supernode_width` columns), stored as a dense triangle and the rows
-// below it, each row's entries side by side. A row's index and its two unknowns are then read
-// once for all the run's columns, not once per column: the solve, memory-bound on large
+// rows below them, stored as a dense triangle and the rows below it, each row's entries side
+// by side. A row's index and its two unknowns are then read once for four of the run's
+// columns, not once per column: the solve, memory-bound on large
 // meshes, takes a fifth less time at 150,000 vertices (doc/performance.md, change 10).
 //
 // The triangular solves run on several threads (Parallel_for.h): the elimination tree is cut
@@ -38,6 +38,7 @@
 #include <mutex>
 #include <utility>
 #include <numeric>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -121,7 +122,6 @@ public:
 
 private:
   static constexpr std::size_t part_count = 4;
-  static constexpr int supernode_width = 32;
 
   struct Supernode
   {
@@ -208,23 +208,14 @@ private:
     return true;
   }
 
+  // The triangle (by columns) comes first in a supernode's entries, then its rows.
+  static std::size_t triangle_size(int width) { return std::size_t(width) * std::size_t(width + 1) / 2; }
+
   void forward_supernode(const Supernode& s, std::vector<double>& y) const
   {
     const int w = s.width;
     const double* entry = &m_values[s.values];
     double* own = &y[2 * std::size_t(s.column)];
-    if(w == 1) // a single column (most of them, but few of the entries): the plain loop
-    {
-      const double y0 = own[0] /= entry[0], y1 = own[1] /= entry[0];
-      ++entry;
-      for(int k = s.rows_begin; k < s.rows_end; ++k, ++entry)
-      {
-        const std::size_t i = std::size_t(m_rows[std::size_t(k)]);
-        y[2 * i] -= *entry * y0;
-        y[2 * i + 1] -= *entry * y1;
-      }
-      return;
-    }
     for(int c = 0; c < w; ++c)
     {
       const double y0 = own[2 * c] /= *entry, y1 = own[2 * c + 1] /= *entry;
@@ -235,70 +226,95 @@ private:
         own[2 * r + 1] -= *entry * y1;
       }
     }
-    for(int k = s.rows_begin; k < s.rows_end; ++k, entry += w)
-    {
-      // Two sums per unknown, over the even and the odd columns: shorter dependency chains.
-      double even0 = 0, even1 = 0, odd0 = 0, odd1 = 0;
-      int c = 0;
-      for(; c + 1 < w; c += 2)
-      {
-        even0 += entry[c] * own[2 * c];
-        even1 += entry[c] * own[2 * c + 1];
-        odd0 += entry[c + 1] * own[2 * c + 2];
-        odd1 += entry[c + 1] * own[2 * c + 3];
-      }
-      if(c < w)
-      {
-        even0 += entry[c] * own[2 * c];
-        even1 += entry[c] * own[2 * c + 1];
-      }
-      const std::size_t i = std::size_t(m_rows[std::size_t(k)]);
-      y[2 * i] -= even0 + odd0;
-      y[2 * i + 1] -= even1 + odd1;
-    }
+    for_column_groups(w, [&](auto width, int first) { forward_rows<decltype(width)::value>(s, first, y); });
   }
 
   void backward_supernode(const Supernode& s, std::vector<double>& y) const
   {
     const int w = s.width;
+    for_column_groups(w, [&](auto width, int first) { backward_rows<decltype(width)::value>(s, first, y); });
     const double* triangle = &m_values[s.values];
-    const double* entry = triangle + w * (w + 1) / 2;
     double* own = &y[2 * std::size_t(s.column)];
-    if(w == 1)
-    {
-      double y0 = own[0], y1 = own[1];
-      for(int k = s.rows_begin; k < s.rows_end; ++k, ++entry)
-      {
-        const std::size_t i = std::size_t(m_rows[std::size_t(k)]);
-        y0 -= *entry * y[2 * i];
-        y1 -= *entry * y[2 * i + 1];
-      }
-      own[0] = y0 / triangle[0];
-      own[1] = y1 / triangle[0];
-      return;
-    }
-    std::array<double, 2 * supernode_width> sum;
-    std::copy(own, own + 2 * w, sum.begin());
-    for(int k = s.rows_begin; k < s.rows_end; ++k, entry += w)
-    {
-      const std::size_t i = std::size_t(m_rows[std::size_t(k)]);
-      const double y0 = y[2 * i], y1 = y[2 * i + 1];
-      for(int c = 0; c < w; ++c)
-      {
-        sum[std::size_t(2 * c)] -= entry[c] * y0;
-        sum[std::size_t(2 * c + 1)] -= entry[c] * y1;
-      }
-    }
     for(int c = w; c-- > 0;)
     {
       const double* column = triangle + c * w - c * (c - 1) / 2; // the diagonal, then the rows below
       for(int r = c + 1; r < w; ++r)
       {
-        sum[std::size_t(2 * c)] -= column[r - c] * own[2 * r];
-        sum[std::size_t(2 * c + 1)] -= column[r - c] * own[2 * r + 1];
+        own[2 * c] -= column[r - c] * own[2 * r];
+        own[2 * c + 1] -= column[r - c] * own[2 * r + 1];
       }
-      own[2 * c] = sum[std::size_t(2 * c)] / column[0];
-      own[2 * c + 1] = sum[std::size_t(2 * c + 1)] / column[0];
+      own[2 * c] /= column[0];
+      own[2 * c + 1] /= column[0];
+    }
+  }
+
+  // Calls f(width, first) on the supernode's columns in groups of at most four: a group's
+  // unknowns and sums stay in registers while its rows are read.
+  template <typename Function>
+  static void for_column_groups(int width, const Function& f)
+  {
+    for(int first = 0; first < width; first += 4)
+      switch((std::min)(4, width - first))
+      {
+        case 1: f(std::integral_constant<int, 1>(), first); break;
+        case 2: f(std::integral_constant<int, 2>(), first); break;
+        case 3: f(std::integral_constant<int, 3>(), first); break;
+        default: f(std::integral_constant<int, 4>(), first); break;
+      }
+  }
+
+  // The rows below the supernode minus its columns first, ..., first + W - 1 times their unknowns.
+  template <int W>
+  void forward_rows(const Supernode& s, int first, std::vector<double>& y) const
+  {
+    const double* own = &y[2 * std::size_t(s.column + first)];
+    double x0[W], x1[W];
+    for(int c = 0; c < W; ++c)
+    {
+      x0[c] = own[2 * c];
+      x1[c] = own[2 * c + 1];
+    }
+    const double* entry = &m_values[s.values + triangle_size(s.width) + std::size_t(first)];
+    for(int k = s.rows_begin; k < s.rows_end; ++k, entry += s.width)
+    {
+      double d0 = 0, d1 = 0;
+      for(int c = 0; c < W; ++c)
+      {
+        d0 += entry[c] * x0[c];
+        d1 += entry[c] * x1[c];
+      }
+      const std::size_t i = std::size_t(m_rows[std::size_t(k)]);
+      y[2 * i] -= d0;
+      y[2 * i + 1] -= d1;
+    }
+  }
+
+  // The unknowns of columns first, ..., first + W - 1 minus their rows below times theirs.
+  template <int W>
+  void backward_rows(const Supernode& s, int first, std::vector<double>& y) const
+  {
+    double* own = &y[2 * std::size_t(s.column + first)];
+    double x0[W], x1[W];
+    for(int c = 0; c < W; ++c)
+    {
+      x0[c] = own[2 * c];
+      x1[c] = own[2 * c + 1];
+    }
+    const double* entry = &m_values[s.values + triangle_size(s.width) + std::size_t(first)];
+    for(int k = s.rows_begin; k < s.rows_end; ++k, entry += s.width)
+    {
+      const std::size_t i = std::size_t(m_rows[std::size_t(k)]);
+      const double y0 = y[2 * i], y1 = y[2 * i + 1];
+      for(int c = 0; c < W; ++c)
+      {
+        x0[c] -= entry[c] * y0;
+        x1[c] -= entry[c] * y1;
+      }
+    }
+    for(int c = 0; c < W; ++c)
+    {
+      own[2 * c] = x0[c];
+      own[2 * c + 1] = x1[c];
     }
   }
 
@@ -418,7 +434,7 @@ private:
     for(std::size_t j = 0; j < n;)
     {
       std::size_t last = j;
-      while(int(last - j) + 1 < supernode_width && extends(last))
+      while(extends(last))
         ++last;
       const int width = int(last - j) + 1;
       const int below = m_first[last + 1] - m_first[last] - 1;
