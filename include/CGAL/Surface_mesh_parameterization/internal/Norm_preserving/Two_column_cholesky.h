@@ -16,8 +16,8 @@
 // The solve goes through the factor by supernodes: runs of consecutive columns with the same
 // rows below them, stored as a dense triangle and the rows below it, each row's entries side
 // by side. A row's index and its two unknowns are then read once for four of the run's
-// columns, not once per column: the solve, memory-bound on large
-// meshes, takes a fifth less time at 150,000 vertices (doc/performance.md, change 10).
+// columns, not once per column: the solve, memory-bound on large meshes, takes 10-33% less
+// time from 9,000 vertices on, about the same below (doc/performance.md, change 10).
 //
 // The triangular solves run on several threads (Parallel_for.h): the elimination tree is cut
 // into `part_count` sets of whole subtrees of about equal work and a "top" holding the
