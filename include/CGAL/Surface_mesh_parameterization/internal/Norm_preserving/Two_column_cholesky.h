@@ -267,31 +267,36 @@ private:
   template <int W>
   void forward_rows(const Supernode& s, int first, std::vector<double>& y) const
   {
-    const double* own = &y[2 * std::size_t(s.column + first)];
-    double x0[W], x1[W];
-    for(int c = 0; c < W; ++c)
-    {
-      x0[c] = own[2 * c];
-      x1[c] = own[2 * c + 1];
-    }
-    const double* entry = &m_values[s.values + triangle_size(s.width) + std::size_t(first)];
-    for(int k = s.rows_begin; k < s.rows_end; ++k, entry += s.width)
-    {
+    for_rows_of_group<W>(s, first, y, [](const double* entry, double& y0, double& y1, double (&x0)[W], double (&x1)[W]) {
       double d0 = 0, d1 = 0;
       for(int c = 0; c < W; ++c)
       {
         d0 += entry[c] * x0[c];
         d1 += entry[c] * x1[c];
       }
-      const std::size_t i = std::size_t(m_rows[std::size_t(k)]);
-      y[2 * i] -= d0;
-      y[2 * i + 1] -= d1;
-    }
+      y0 -= d0;
+      y1 -= d1;
+    });
   }
 
   // The unknowns of columns first, ..., first + W - 1 minus their rows below times theirs.
   template <int W>
   void backward_rows(const Supernode& s, int first, std::vector<double>& y) const
+  {
+    for_rows_of_group<W>(s, first, y, [](const double* entry, double& y0, double& y1, double (&x0)[W], double (&x1)[W]) {
+      for(int c = 0; c < W; ++c)
+      {
+        x0[c] -= entry[c] * y0;
+        x1[c] -= entry[c] * y1;
+      }
+    });
+  }
+
+  // Calls row(entries, y0, y1, x0, x1) on each row below the supernode: its entries in columns
+  // first, ..., first + W - 1, its two unknowns, and those of the W columns, held in registers
+  // and written back at the end.
+  template <int W, typename Row>
+  void for_rows_of_group(const Supernode& s, int first, std::vector<double>& y, const Row& row) const
   {
     double* own = &y[2 * std::size_t(s.column + first)];
     double x0[W], x1[W];
@@ -304,12 +309,7 @@ private:
     for(int k = s.rows_begin; k < s.rows_end; ++k, entry += s.width)
     {
       const std::size_t i = std::size_t(m_rows[std::size_t(k)]);
-      const double y0 = y[2 * i], y1 = y[2 * i + 1];
-      for(int c = 0; c < W; ++c)
-      {
-        x0[c] -= entry[c] * y0;
-        x1[c] -= entry[c] * y1;
-      }
+      row(entry, y[2 * i], y[2 * i + 1], x0, x1);
     }
     for(int c = 0; c < W; ++c)
     {
