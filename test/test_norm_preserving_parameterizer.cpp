@@ -345,8 +345,9 @@ TEST(TwoColumnCholesky, SolvesLikeEigenAndSplitsLargeFactors)
   }
 }
 
-// A dense matrix is one run of columns with the same rows: solved as one supernode, as Eigen's
-// LDL' solves it (100 columns: groups of four and the triangle); a mesh Laplacian has runs too.
+// A dense matrix is one run of columns with the same rows: solved as one supernode (its
+// triangle; no rows below it) as Eigen's LDL' solves it; a mesh Laplacian has runs too, with
+// rows below them (their solve: SolvesLikeEigenAndSplitsLargeFactors).
 TEST(TwoColumnCholesky, SolvesByRunsOfColumns)
 {
   namespace NP = SMP::internal::Norm_preserving;
