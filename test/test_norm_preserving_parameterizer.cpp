@@ -430,10 +430,46 @@ TEST(SignFeasibleProjection, MakesAnyPointFeasibleAndKeepsFeasibleOnes)
   for(std::size_t i = 0; i < noisy.size(); ++i)
     noisy[i] = {noisy[i][0] + 0.01 * std::sin(7. * double(i)), noisy[i][1] + 0.01 * std::cos(5. * double(i))};
   ASSERT_LT(NP::sign_constraint_extent(geometry, signs, noisy, 0.).first, 0.);
+  NP::UV_vector least = noisy;
   projection.apply(noisy);
   EXPECT_GE(NP::sign_constraint_extent(geometry, signs, noisy, 0.).first, 0.);
   for(const auto& f : fixed)
     EXPECT_EQ(noisy[f.index], f.target);
+
+  // It is the least feasible point above the input clamped between the fixed values below and
+  // above each vertex: the same point as relaxing the edges in any order until nothing moves.
+  const double infinity = std::numeric_limits<double>::infinity();
+  for(int c = 0; c < 2; ++c)
+  {
+    std::vector<double> floor(guess.size(), -infinity), ceiling(guess.size(), infinity);
+    for(const auto& f : fixed)
+      floor[f.index] = ceiling[f.index] = f.target[c];
+    auto relax = [&](std::vector<double>& x, bool up) {
+      for(bool moved = true; moved;)
+      {
+        moved = false;
+        for(std::size_t e = 0; e < geometry.edges.size(); ++e)
+        {
+          const std::size_t high = geometry.edges[e][signs[e][c] > 0 ? 0 : 1], low = geometry.edges[e][signs[e][c] > 0 ? 1 : 0];
+          double& moving = up ? x[high] : x[low];
+          const double bound = up ? x[low] : x[high];
+          if(up ? moving < bound : moving > bound)
+          {
+            moving = bound;
+            moved = true;
+          }
+        }
+      }
+    };
+    relax(floor, true);
+    relax(ceiling, false);
+    std::vector<double> x(guess.size());
+    for(std::size_t i = 0; i < x.size(); ++i)
+      x[i] = (std::min)((std::max)(least[i][c], floor[i]), ceiling[i]);
+    relax(x, true);
+    for(std::size_t i = 0; i < x.size(); ++i)
+      ASSERT_EQ(noisy[i][c], x[i]) << "vertex " << i << ", coordinate " << c;
+  }
 }
 
 TEST(NormPreservingParameterizer, WorksThroughCGALParameterizeOnADisk)

@@ -41,46 +41,54 @@ public:
       std::sort(k.order.begin(), k.order.end(), [&](std::size_t i, std::size_t j) {
         return guess[i][c] < guess[j][c] || (guess[i][c] == guess[j][c] && i < j);
       });
-      // Lower neighbours of each vertex, in compressed rows.
+      std::vector<int> position(n);
+      for(std::size_t p = 0; p < n; ++p)
+        position[k.order[p]] = int(p);
+      // Lower neighbours of each position, in compressed rows, in the order of the edges.
       k.first.assign(n + 1, 0);
       for(std::size_t e = 0; e < signs.size(); ++e)
-        ++k.first[higher_end(geometry, signs, e, c) + 1];
+        ++k.first[std::size_t(position[higher_end(geometry, signs, e, c)]) + 1];
       std::partial_sum(k.first.begin(), k.first.end(), k.first.begin());
       k.lower.resize(signs.size());
-      std::vector<std::size_t> next(k.first.begin(), k.first.end() - 1);
+      std::vector<int> next(k.first.begin(), k.first.end() - 1);
       for(std::size_t e = 0; e < signs.size(); ++e)
       {
         const std::size_t high = higher_end(geometry, signs, e, c);
-        k.lower[next[high]++] = geometry.edges[e][0] + geometry.edges[e][1] - high;
+        k.lower[std::size_t(next[std::size_t(position[high])]++)] = position[geometry.edges[e][0] + geometry.edges[e][1] - high];
       }
-      // Fixed values below (floor) and above (ceiling) each vertex in the orientation.
+      // Fixed values below (floor) and above (ceiling) each position in the orientation.
       k.floor.assign(n, -std::numeric_limits<double>::infinity());
       k.ceiling.assign(n, std::numeric_limits<double>::infinity());
       for(const Fixed_vertex& f : fixed)
-        k.floor[f.index] = k.ceiling[f.index] = f.target[c];
-      for(std::size_t i : k.order)
-        for(std::size_t l = k.first[i]; l < k.first[i + 1]; ++l)
-          k.floor[i] = (std::max)(k.floor[i], k.floor[k.lower[l]]);
-      for(auto it = k.order.rbegin(); it != k.order.rend(); ++it)
-        for(std::size_t l = k.first[*it]; l < k.first[*it + 1]; ++l)
-          k.ceiling[k.lower[l]] = (std::min)(k.ceiling[k.lower[l]], k.ceiling[*it]);
+        k.floor[std::size_t(position[f.index])] = k.ceiling[std::size_t(position[f.index])] = f.target[c];
+      for(std::size_t p = 0; p < n; ++p)
+        for(int l = k.first[p]; l < k.first[p + 1]; ++l)
+          k.floor[p] = (std::max)(k.floor[p], k.floor[std::size_t(k.lower[std::size_t(l)])]);
+      for(std::size_t p = n; p-- > 0;)
+        for(int l = k.first[p]; l < k.first[p + 1]; ++l)
+        {
+          double& below = k.ceiling[std::size_t(k.lower[std::size_t(l)])];
+          below = (std::min)(below, k.ceiling[p]);
+        }
     }
   }
 
   // Replaces `uv` by a point that satisfies every sign constraint and the fixed vertices (a
   // fixed vertex lies between its floor and ceiling, which are both its value, and every lower
-  // neighbour of a vertex lies under that vertex's ceiling, so the sweep never lifts it).
+  // neighbour of a vertex lies under that vertex's ceiling, so the sweep never lifts it). The
+  // sweep reads the values in topological order, where a vertex's lower neighbours are near it.
   void apply(UV_vector& uv) const
   {
+    std::vector<double> values(uv.size()); // of one coordinate, by position
     for(int c = 0; c < 2; ++c)
     {
       const Coordinate& k = m_coordinates[c];
-      for(std::size_t i : k.order)
+      for(std::size_t p = 0; p < k.order.size(); ++p)
       {
-        double w = (std::min)((std::max)(uv[i][c], k.floor[i]), k.ceiling[i]);
-        for(std::size_t l = k.first[i]; l < k.first[i + 1]; ++l)
-          w = (std::max)(w, uv[k.lower[l]][c]);
-        uv[i][c] = w;
+        double w = (std::min)((std::max)(uv[k.order[p]][c], k.floor[p]), k.ceiling[p]);
+        for(int l = k.first[p]; l < k.first[p + 1]; ++l)
+          w = (std::max)(w, values[std::size_t(k.lower[std::size_t(l)])]);
+        values[p] = uv[k.order[p]][c] = w;
       }
     }
   }
@@ -88,9 +96,9 @@ public:
 private:
   struct Coordinate
   {
-    std::vector<std::size_t> order;          // topological order of the orientation
-    std::vector<std::size_t> first, lower;   // lower neighbours of vertex i: lower[first[i]..first[i+1])
-    std::vector<double> floor, ceiling;      // fixed values the vertex must lie between
+    std::vector<std::size_t> order;          // topological order of the orientation: the vertex at each position
+    std::vector<int> first, lower;           // lower neighbours of position p: lower[first[p]..first[p+1]), as positions
+    std::vector<double> floor, ceiling;      // fixed values the vertex at each position must lie between
   };
 
   static std::size_t higher_end(const Norm_preserving_geometry& geometry, const Edge_signs& signs,
