@@ -215,6 +215,12 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   std::vector<double> rhs(2 * std::size_t(free_count)); // u and v interleaved
   const Free_vertex_edges incidence = free_vertex_edges(geometry, free_index);
   std::vector<std::array<double, 2> > edge_values(m); // wished differences, then changes of z
+  // The edges with a fixed end, whose wished differences also carry the fixed values to the
+  // right-hand side (the mesh step's loop over all edges then reads no vertex data).
+  std::vector<std::size_t> fixed_edges;
+  for(std::size_t e = 0; e < m; ++e)
+    if(free_index[geometry.edges[e][0]] < 0 || free_index[geometry.edges[e][1]] < 0)
+      fixed_edges.push_back(e);
   const std::size_t block = 8192;
   std::vector<double> block_primal((m + block - 1) / block);
   UV_vector feasible;          // the last iterate swept onto the feasible set
@@ -304,9 +310,11 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     parallel_for_each_block(m, block, [&](std::size_t begin, std::size_t end) {
       for(std::size_t e = begin; e < end; ++e)
         for(int c = 0; c < 2; ++c)
-          edge_values[e][c] = free_edge_difference(free_index, geometry.edges[e][0], geometry.edges[e][1], c,
-                                                   signs[e][c] * (z[e][c] - w[e][c]), uv);
+          edge_values[e][c] = signs[e][c] * (z[e][c] - w[e][c]);
     });
+    for(std::size_t e : fixed_edges)
+      for(int c = 0; c < 2; ++c)
+        edge_values[e][c] = free_edge_difference(free_index, geometry.edges[e][0], geometry.edges[e][1], c, edge_values[e][c], uv);
     gather_edge_values(incidence, edge_values, rhs);
     cholesky.solve(rhs);
     for(std::size_t i = 0; i < n; ++i)
