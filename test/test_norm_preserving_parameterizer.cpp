@@ -429,8 +429,10 @@ TEST(SignFeasibleProjection, MakesAnyPointFeasibleAndKeepsFeasibleOnes)
   NP::UV_vector noisy = guess;
   for(std::size_t i = 0; i < noisy.size(); ++i)
     noisy[i] = {noisy[i][0] + 0.01 * std::sin(7. * double(i)), noisy[i][1] + 0.01 * std::cos(5. * double(i))};
+  for(const auto& f : fixed) // below their values: the sweep must lift them back, no further
+    noisy[f.index] = {f.target[0] - 1., f.target[1] - 1.};
   ASSERT_LT(NP::sign_constraint_extent(geometry, signs, noisy, 0.).first, 0.);
-  NP::UV_vector least = noisy;
+  const NP::UV_vector input = noisy;
   projection.apply(noisy);
   EXPECT_GE(NP::sign_constraint_extent(geometry, signs, noisy, 0.).first, 0.);
   for(const auto& f : fixed)
@@ -465,7 +467,7 @@ TEST(SignFeasibleProjection, MakesAnyPointFeasibleAndKeepsFeasibleOnes)
     relax(ceiling, false);
     std::vector<double> x(guess.size());
     for(std::size_t i = 0; i < x.size(); ++i)
-      x[i] = (std::min)((std::max)(least[i][c], floor[i]), ceiling[i]);
+      x[i] = (std::min)((std::max)(input[i][c], floor[i]), ceiling[i]);
     relax(x, true);
     for(std::size_t i = 0; i < x.size(); ++i)
       ASSERT_EQ(noisy[i][c], x[i]) << "vertex " << i << ", coordinate " << c;
