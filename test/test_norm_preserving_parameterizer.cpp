@@ -312,18 +312,21 @@ SMP::internal::Norm_preserving::Sparse_matrix free_laplacian(const Mesh& mesh)
 }
 
 // The two-column solve, split into parts solved on several threads, matches Eigen's own
-// LDL' solve of the same Laplacian; a small factor is not split.
+// LDL' solve of the same Laplacian; a small factor (nefertiti, 299 vertices) is not split,
+// the factor of a few thousand vertices is (cow, AMD order).
 TEST(TwoColumnCholesky, SolvesLikeEigenAndSplitsLargeFactors)
 {
   namespace NP = SMP::internal::Norm_preserving;
-  for(const std::string name : {"cow", "bunny00"})
+  for(const std::string name : {"nefertiti", "cow", "bunny00"})
   {
     const NP::Sparse_matrix lower = free_laplacian(np_test::load_mesh(name));
     const std::size_t n = std::size_t(lower.rows());
     NP::Two_column_cholesky cholesky;
     ASSERT_TRUE(cholesky.compute(lower)) << name;
-    if(name == "cow")
+    if(name == "nefertiti")
       EXPECT_EQ(cholesky.sequential_columns(), n);
+    else if(name == "cow")
+      EXPECT_LT(cholesky.sequential_columns(), n / 10) << "the factor of cow is split into parts";
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD // the METIS ordering's tree; Eigen's AMD one may split worse
     else
       EXPECT_LT(cholesky.sequential_columns(), n / 20) << "the factor of bunny00 is split into parts";

@@ -23,33 +23,30 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
 
-// Calls f(0), ..., f(count - 1), in any order and possibly at once; one after the other
-// when `count` is below `minimum_count` (waking the worker threads costs more than a small
-// loop: doc/performance.md, change 7).
+// Calls f(0), ..., f(count - 1), in any order and possibly at once (one piece alone runs on
+// the calling thread).
 template <typename Function>
-void parallel_for_each_index(std::size_t count, const Function& f, std::size_t minimum_count = 2)
+void parallel_for_each_index(std::size_t count, const Function& f)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  if(count >= minimum_count)
+  if(count > 1)
   {
     tbb::parallel_for(std::size_t(0), count, f);
     return;
   }
-#else
-  (void)minimum_count;
 #endif
   for(std::size_t i = 0; i < count; ++i)
     f(i);
 }
 
 // Calls f(begin, end) on consecutive blocks of [0, size) of `block` indices (the last one
-// shorter), in any order and possibly at once; one after the other for fewer than 4 blocks.
+// shorter), in any order and possibly at once.
 template <typename Function>
 void parallel_for_each_block(std::size_t size, std::size_t block, const Function& f)
 {
   parallel_for_each_index((size + block - 1) / block, [&](std::size_t b) {
     f(b * block, (std::min)(size, (b + 1) * block));
-  }, 4);
+  });
 }
 
 } // namespace Norm_preserving

@@ -221,7 +221,9 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   for(std::size_t e = 0; e < m; ++e)
     if(free_index[geometry.edges[e][0]] < 0 || free_index[geometry.edges[e][1]] < 0)
       fixed_edges.push_back(e);
-  const std::size_t block = 8192;
+  // Edges a block: from about 1,000 vertices on, the loops run on all cores (doc/performance.md,
+  // change 12).
+  const std::size_t block = 1024;
   std::vector<double> block_primal((m + block - 1) / block);
   UV_vector feasible;          // the last iterate swept onto the feasible set
   double objective = 0;        // its objective

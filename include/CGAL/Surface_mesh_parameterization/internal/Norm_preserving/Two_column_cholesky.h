@@ -321,7 +321,9 @@ private:
   // Cuts the elimination tree (parent: first row below the diagonal) into the parts and the
   // top: the largest subtree goes to the top (its root) and its children replace it, until
   // the subtrees, dealt largest first to the least loaded part, load no part more than 10%
-  // over an even share, or the top would exceed 10% of the work. Small factors are all top.
+  // over an even share, or the top would exceed 10% of the work. Factors of under 2^14
+  // entries (meshes of up to ~700 vertices) are all top: a part would take less time than
+  // handing it to another thread (doc/performance.md, change 12).
   // Returns the part of each column, `part_count` for the top.
   std::vector<int> split_into_parts()
   {
@@ -351,7 +353,7 @@ private:
         subtrees.push_back(int(j));
 
     const double total = double(m_first[n]);
-    const double minimum_work = 1 << 18; // below: all top, the pass on one thread
+    const double minimum_work = 1 << 14; // below: all top, the pass on one thread
     std::vector<char> in_top(n, char(total < minimum_work));
     std::vector<int> bin(n, -1);
     double top_work = 0;
