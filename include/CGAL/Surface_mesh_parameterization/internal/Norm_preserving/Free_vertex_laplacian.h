@@ -118,7 +118,7 @@ inline Free_vertex_edges free_vertex_edges(const Norm_preserving_geometry& geome
 inline void gather_edge_values(const Free_vertex_edges& incidence, const std::vector<std::array<double, 2> >& values,
                                std::vector<double>& rhs)
 {
-  const std::size_t block = 512; // free vertices: split from ~1,000 vertices on (performance.md, change 12)
+  const std::size_t block = 512; // free vertices: split from ~1,000 vertices on (doc/performance.md, change 12)
   parallel_for_each_block(incidence.first.size() - 1, block, [&](std::size_t begin, std::size_t end) {
     for(std::size_t f = begin; f < end; ++f)
     {
