@@ -40,9 +40,24 @@ namespace Norm_preserving {
 
 using Active_set = std::vector<std::array<char, 2> >; // per edge and coordinate: at equality
 
-// The factorization of the polish's regularized normal equations: Eigen's simplicial LDL' in
-// AMD order, or from 25,000 unknowns CHOLMOD's supernodal Cholesky when the package is
-// configured with it (several times faster there, slower below: doc/performance.md).
+// The vertices in the order the factor of the free-vertex Laplacian eliminates them
+// (`positions`, per free index), the fixed ones last. The polish numbers its unknowns in this
+// order: every edge couples the u and v of both its ends, so the Laplacian's fill-reducing
+// order, each vertex's two unknowns side by side, suits its normal equations too, and they
+// are factored without an ordering of their own in each round (doc/performance.md, change 13).
+inline std::vector<std::size_t> elimination_order(const std::vector<int>& free_index, const std::vector<int>& positions)
+{
+  std::vector<std::size_t> order(free_index.size());
+  std::size_t fixed = positions.size();
+  for(std::size_t i = 0; i < free_index.size(); ++i)
+    order[free_index[i] >= 0 ? std::size_t(positions[std::size_t(free_index[i])]) : fixed++] = i;
+  return order;
+}
+
+// The factorization of the polish's regularized normal equations, its unknowns already in a
+// fill-reducing order: Eigen's simplicial LDL', or from 25,000 unknowns CHOLMOD's supernodal
+// Cholesky when the package is configured with it (faster there, slower below:
+// doc/performance.md).
 class Regularized_normal_cholesky
 {
 public:
@@ -55,8 +70,8 @@ public:
     {
       cholmod_common& common = m_cholmod.cholmod();
       common.print = 0;
-      common.nmethods = 1; // AMD only: METIS keeps a global random state (Two_column_cholesky.h)
-      common.method[0].ordering = CHOLMOD_AMD;
+      common.nmethods = 1;
+      common.method[0].ordering = CHOLMOD_NATURAL;
       m_cholmod.compute(lower);
       return m_cholmod.info() == Eigen::Success;
     }
@@ -75,29 +90,37 @@ public:
   }
 
 private:
-  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> m_ldlt;
+  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower, Eigen::NaturalOrdering<int> > m_ldlt;
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
   Sparse_cholesky m_cholmod;
   bool m_large = false;
 #endif
 };
 
-// The solution of Eq. 5 with the constraints of `active` as equalities nearest to `start`,
-// written to `uv`, and its multipliers to `y` (per edge, for a and b), those of the active
-// edges off the spanning trees taken from `estimate`; false if the active set ties the two
-// fixed vertices to different values.
-inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
-                                const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
-                                const Active_set& active, const UV_vector& start,
-                                const std::vector<std::array<double, 2> >& estimate, UV_vector& uv,
-                                std::vector<std::array<double, 2> >& y)
+// Eq. 5 with the constraints of an active set as equalities: per coordinate, the clusters of
+// vertices the active edges tie together, and the regularized normal equations in the values
+// of the clusters that hold no fixed vertex.
+struct Active_set_system
+{
+  std::array<std::vector<std::size_t>, 2> cluster; // per vertex: its cluster's root
+  std::array<std::vector<int>, 2> unknown;         // per cluster root: its unknown, -1 if fixed
+  std::array<std::vector<double>, 2> value;        // per cluster root: its value if fixed
+  Sparse_matrix normal;                            // lower triangle, eps added to the diagonal
+  Eigen::VectorXd rhs;
+  double eps = 0;
+};
+
+// The system of the constraints of `active`, its unknowns numbered along `order` (every vertex
+// once: elimination_order()); false if the active set ties the two fixed vertices to
+// different values.
+inline bool active_set_system(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                              const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
+                              const std::vector<std::size_t>& order, const Active_set& active, Active_set_system& system)
 {
   const std::size_t n = geometry.points.size(), m = geometry.edges.size();
-  // Clusters per coordinate (union-find), their fixed values and their unknowns.
-  std::array<std::vector<std::size_t>, 2> cluster;
-  std::array<std::vector<int>, 2> unknown; // per cluster root: index of its unknown, -1 if fixed
-  std::array<std::vector<double>, 2> value;
-  int unknowns = 0;
+  std::array<std::vector<std::size_t>, 2>& cluster = system.cluster;
+  std::array<std::vector<int>, 2>& unknown = system.unknown;
+  std::array<std::vector<double>, 2>& value = system.value;
   for(int c = 0; c < 2; ++c)
   {
     std::vector<std::size_t>& parent = cluster[c];
@@ -116,26 +139,35 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
       }
     for(std::size_t i = 0; i < n; ++i)
       parent[i] = find(i);
-    unknown[c].assign(n, 0);
+    unknown[c].assign(n, -2); // -2: not numbered yet
     value[c].assign(n, 0.);
-    std::vector<char> is_fixed(n, 0);
     for(const Fixed_vertex& f : fixed)
     {
       const std::size_t r = parent[f.index];
-      if(is_fixed[r] && value[c][r] != f.target[c])
+      if(unknown[c][r] == -1 && value[c][r] != f.target[c])
         return false;
-      is_fixed[r] = 1;
+      unknown[c][r] = -1;
       value[c][r] = f.target[c];
     }
-    for(std::size_t i = 0; i < n; ++i)
-      if(parent[i] == i)
-        unknown[c][i] = is_fixed[i] ? -1 : unknowns++;
   }
+  // The unknowns follow `order`, each vertex's u then v; a cluster takes the place of its
+  // member eliminated last: it couples the neighbours of all its members, and eliminated at
+  // its first member it would fill the factor (3-9 times the fill on the benchmark meshes).
+  int unknowns = 0;
+  for(int c = 0; c < 2; ++c)
+    for(std::size_t i = 0; i < n; ++i)
+      unknowns += cluster[c][i] == i && unknown[c][i] == -2 ? 1 : 0;
+  int next = unknowns;
+  for(std::size_t k = order.size(); k-- > 0;)
+    for(int c = 2; c-- > 0;)
+      if(unknown[c][cluster[c][order[k]]] == -2)
+        unknown[c][cluster[c][order[k]]] = --next;
 
   // Normal equations of sum_e (d_e - C_e x)^2 in the clusters' unknowns.
   std::vector<Eigen::Triplet<double> > triplets;
   triplets.reserve(10 * m);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
+  Eigen::VectorXd& rhs = system.rhs;
+  rhs = Eigen::VectorXd::Zero(unknowns);
   for(std::size_t e = 0; e < m; ++e)
   {
     std::array<int, 4> index;
@@ -171,13 +203,35 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
   for(const auto& t : triplets)
     if(t.row() == t.col())
       diagonal_sum += t.value();
-  const double eps = 1e-9 * diagonal_sum / (std::max)(1, unknowns);
+  system.eps = 1e-9 * diagonal_sum / (std::max)(1, unknowns);
   for(int k = 0; k < unknowns; ++k)
-    triplets.emplace_back(k, k, eps);
-  Sparse_matrix normal(unknowns, unknowns);
-  normal.setFromTriplets(triplets.begin(), triplets.end());
+    triplets.emplace_back(k, k, system.eps);
+  system.normal.resize(unknowns, unknowns);
+  system.normal.setFromTriplets(triplets.begin(), triplets.end());
+  return true;
+}
+
+// The solution of Eq. 5 with the constraints of `active` as equalities nearest to `start`,
+// written to `uv`, and its multipliers to `y` (per edge, for a and b), those of the active
+// edges off the spanning trees taken from `estimate`; false if the active set ties the two
+// fixed vertices to different values. `order` as for active_set_system().
+inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                                const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
+                                const std::vector<std::size_t>& order, const Active_set& active, const UV_vector& start,
+                                const std::vector<std::array<double, 2> >& estimate, UV_vector& uv,
+                                std::vector<std::array<double, 2> >& y)
+{
+  Active_set_system system;
+  if(!active_set_system(geometry, lengths, signs, fixed, order, active, system))
+    return false;
+  const std::size_t n = geometry.points.size(), m = geometry.edges.size();
+  const std::array<std::vector<std::size_t>, 2>& cluster = system.cluster;
+  const std::array<std::vector<int>, 2>& unknown = system.unknown;
+  const std::array<std::vector<double>, 2>& value = system.value;
+  const double eps = system.eps;
+  const Eigen::Index unknowns = system.normal.rows();
   Regularized_normal_cholesky cholesky;
-  if(!cholesky.compute(normal))
+  if(!cholesky.compute(system.normal))
     return false;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(unknowns), members = Eigen::VectorXd::Zero(unknowns);
   for(int c = 0; c < 2; ++c)
@@ -190,7 +244,7 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
   x = x.cwiseQuotient(members);
   for(int step = 0; step < 4; ++step)
   {
-    const Eigen::VectorXd next = cholesky.solve(rhs + eps * x);
+    const Eigen::VectorXd next = cholesky.solve(system.rhs + eps * x);
     if(!next.allFinite())
       return false;
     const bool still = (next - x).lpNorm<Eigen::Infinity>() <= 1e-15 * (1. + x.lpNorm<Eigen::Infinity>());

@@ -114,6 +114,9 @@ public:
     }
   }
 
+  // The position of each unknown in the order the factor eliminates them.
+  const std::vector<int>& positions() const { return m_position; }
+
   // The number of columns solved on one thread (the top): all of them for a small factor.
   std::size_t sequential_columns() const { return m_top.size(); }
 
