@@ -56,8 +56,8 @@ inline std::vector<std::size_t> elimination_order(const std::vector<int>& free_i
 
 // The factorization of the polish's regularized normal equations, its unknowns already in a
 // fill-reducing order: Eigen's simplicial LDL', or from 25,000 unknowns CHOLMOD's supernodal
-// Cholesky when the package is configured with it (faster there, slower below:
-// doc/performance.md).
+// Cholesky when the package is configured with it (faster there; below, faster on some meshes
+// and slower on others: doc/performance.md, changes 7 and 13).
 class Regularized_normal_cholesky
 {
 public:
