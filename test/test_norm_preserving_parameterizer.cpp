@@ -303,6 +303,28 @@ SMP::Norm_preserving_geometry component_geometry(Mesh mesh)
   return component.geometry;
 }
 
+// A feasible start for Eq. 5 on a component: the guess (x + 0.3 z, y), the signs taken from
+// it, and the ends of the first edge fixed at their guessed values.
+struct Skewed_start
+{
+  SMP::internal::Norm_preserving::UV_vector guess;
+  SMP::internal::Norm_preserving::Edge_signs signs;
+  std::array<SMP::internal::Norm_preserving::Fixed_vertex, 2> fixed;
+};
+
+Skewed_start skewed_start(const SMP::Norm_preserving_geometry& geometry)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  Skewed_start start;
+  start.guess.resize(geometry.points.size());
+  for(std::size_t i = 0; i < start.guess.size(); ++i)
+    start.guess[i] = {geometry.points[i][0] + 0.3 * geometry.points[i][2], geometry.points[i][1]};
+  start.signs = NP::edge_signs(geometry, start.guess);
+  start.fixed = {NP::Fixed_vertex{geometry.edges[0][0], start.guess[geometry.edges[0][0]]},
+                 NP::Fixed_vertex{geometry.edges[0][1], start.guess[geometry.edges[0][1]]}};
+  return start;
+}
+
 // The free-vertex Laplacian of a mesh with its first edge's ends fixed, as the ADMM builds it.
 SMP::internal::Norm_preserving::Sparse_matrix free_laplacian(const Mesh& mesh)
 {
@@ -399,12 +421,10 @@ TEST(ActiveSetPolish, FactorsInTheLaplaciansOrderWithLittleFill)
   {
     const SMP::Norm_preserving_geometry geometry = component_geometry(np_test::load_mesh(name));
     const std::size_t m = geometry.edges.size();
-    NP::UV_vector uv(geometry.points.size());
-    for(std::size_t i = 0; i < uv.size(); ++i)
-      uv[i] = {geometry.points[i][0] + 0.3 * geometry.points[i][2], geometry.points[i][1]};
-    const NP::Edge_signs signs = NP::edge_signs(geometry, uv);
-    const std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{geometry.edges[0][0], uv[geometry.edges[0][0]]},
-                                                   NP::Fixed_vertex{geometry.edges[0][1], uv[geometry.edges[0][1]]}};
+    const Skewed_start start = skewed_start(geometry);
+    const NP::Edge_signs& signs = start.signs;
+    const std::array<NP::Fixed_vertex, 2>& fixed = start.fixed;
+    NP::UV_vector uv = start.guess;
     const std::vector<double> lengths = NP::edge_l1_lengths(geometry);
     NP::Admm_state state;
     const NP::Admm_result result = NP::solve_sign_constrained_admm(
@@ -472,12 +492,10 @@ TEST(SignFeasibleProjection, MakesAnyPointFeasibleAndKeepsFeasibleOnes)
 {
   namespace NP = SMP::internal::Norm_preserving;
   const SMP::Norm_preserving_geometry geometry = component_geometry(np_test::load_mesh("cow"));
-  NP::UV_vector guess(geometry.points.size());
-  for(std::size_t i = 0; i < guess.size(); ++i)
-    guess[i] = {geometry.points[i][0] + 0.3 * geometry.points[i][2], geometry.points[i][1]};
-  const NP::Edge_signs signs = NP::edge_signs(geometry, guess);
-  const std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{geometry.edges[0][0], guess[geometry.edges[0][0]]},
-                                                 NP::Fixed_vertex{geometry.edges[0][1], guess[geometry.edges[0][1]]}};
+  const Skewed_start start = skewed_start(geometry);
+  const NP::UV_vector& guess = start.guess;
+  const NP::Edge_signs& signs = start.signs;
+  const std::array<NP::Fixed_vertex, 2>& fixed = start.fixed;
   const NP::Sign_feasible_projection projection(geometry, signs, fixed, guess);
 
   NP::UV_vector same = guess;
