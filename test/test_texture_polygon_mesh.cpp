@@ -7,10 +7,16 @@
 
 #include <gtest/gtest.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -103,6 +109,40 @@ TEST(TexturePolygonMesh, KeepsEachComponentAtTheCommonScale)
       EXPECT_NEAR(d.y(), shift->y(), 1e-9);
     }
   }
+}
+
+// The components run at once on a TBB build: one thread and several give the same bits.
+TEST(TexturePolygonMesh, GivesTheSameBitsOnOneThreadAsOnSeveral)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  for(const std::string name : {"knot2", "blobby_3cc"})
+  {
+    std::optional<Textured> several, one;
+    {
+      // Four threads even on a machine with fewer cores.
+      tbb::global_control four(tbb::global_control::max_allowed_parallelism, 4);
+      tbb::task_arena arena(4);
+      arena.execute([&] { several.emplace(np_test::load_mesh(name)); });
+    }
+    {
+      tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+      one.emplace(np_test::load_mesh(name));
+    }
+    ASSERT_EQ(several->status, SMP::OK) << name << ": " << several->report.message;
+    ASSERT_EQ(one->status, SMP::OK) << name << ": " << one->report.message;
+    ASSERT_GT(several->report.components, 1u) << name;
+    ASSERT_EQ(several->report.reports.size(), one->report.reports.size()) << name;
+    for(std::size_t c = 0; c < one->report.reports.size(); ++c)
+    {
+      EXPECT_EQ(several->report.reports[c].solver_iterations, one->report.reports[c].solver_iterations) << name;
+      EXPECT_EQ(several->report.reports[c].objective, one->report.reports[c].objective) << name;
+    }
+    for(Vertex v : vertices(one->mesh))
+      ASSERT_EQ(get(several->uv, v), get(one->uv, v)) << name;
+  }
+#else
+  GTEST_SKIP() << "built without TBB: one thread only";
+#endif
 }
 
 TEST(TexturePolygonMesh, TilesTheFittedLayout)

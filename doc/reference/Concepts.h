@@ -20,7 +20,8 @@ public:
   NormPreservingInitialGuess(const NormPreservingInitialGuess&);
 
   /// resizes `uv` to `geometry.points.size()` and fills it with finite values, or returns an
-  /// error code (such as `ERROR_WRONG_PARAMETER`) and a readable `message`.
+  /// error code (such as `ERROR_WRONG_PARAMETER`) and a readable `message`. The whole-soup
+  /// calls built with TBB call it for several components at once: it changes no shared state.
   Error_code operator()(const Norm_preserving_geometry& geometry,
                         std::vector<std::array<double, 2> >& uv,
                         std::string& message) const;
@@ -74,7 +75,8 @@ public:
   /// guess, or the previous solution), and writes the solution to `uv`, the fixed vertices at
   /// their targets; fills `report`. Returns `false`, with `report.message` saying why, if
   /// there is no solution; a solve stopped by a limit returns `true` with the best feasible
-  /// point and says so in `report.status`.
+  /// point and says so in `report.status`. The whole-soup calls built with TBB solve several
+  /// components at once, each with its own `State`: it changes no shared state.
   bool solve(const Norm_preserving_problem& problem, std::vector<std::array<double, 2> >& uv, State& state,
              Norm_preserving_solve_report& report) const;
 };

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_options.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Component_layout.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Pipeline.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Soup_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Texture_space_fit.h>
@@ -149,11 +150,13 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
   pipeline.options().texture_fit = NORM_PRESERVING_NO_FIT; // the fit and the tiling come after the layout
   pipeline.options().tiles_u = pipeline.options().tiles_v = 1;
   const std::vector<std::vector<std::size_t> > edges_of = NP::edges_by_component(graph);
-  std::vector<std::size_t> local(points.size(), none);
-  std::vector<std::array<double, 2> > component_uv;
+  std::vector<std::size_t> local(points.size(), none); // each component writes its own members
+  std::vector<UV_vector> component_uv(r.components);
+  std::vector<unsigned char> is_point(r.components, 0); // of zero extent
   r.reports.resize(r.components);
-  for(std::size_t c = 0; c < r.components; ++c)
-  {
+  // The components are independent: on a TBB build they run at once, each as it would alone,
+  // so the bits do not depend on the number of threads (doc/decisions.md, the QP's solver).
+  NP::parallel_for_each_index(r.components, [&](std::size_t c) {
     const auto component_start = std::chrono::steady_clock::now();
     Norm_preserving_geometry geometry = NP::component_geometry(graph, c, edges_of, local);
     Norm_preserving_report& component_report = r.reports[c];
@@ -163,8 +166,9 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
     const bool has_extent = std::any_of(geometry.edges.begin(), geometry.edges.end(), [&](const auto& e) {
       return geometry.points[e[0]] != geometry.points[e[1]];
     });
+    Error_code component_result = OK;
     if(has_extent)
-      status = pipeline.run(std::move(geometry), pair, component_uv, component_report);
+      component_result = pipeline.run(std::move(geometry), pair, component_uv[c], component_report);
     else
     {
       // Every vertex at one position: the optimum of Eq. 5 is a point.
@@ -172,21 +176,28 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
       component_report.edges = geometry.edges.size();
       component_report.solver_status = NORM_PRESERVING_SOLVER_CONVERGED;
       component_report.optimality_gap = 0;
-      component_uv.assign(geometry.points.size(), {0., 0.});
-      ++r.point_components;
-      status = pair && pair->first != pair->second ? ERROR_WRONG_PARAMETER : OK;
-      component_report.message = status == OK ? "" : "the fixed vertices are at the same position";
+      component_uv[c].assign(geometry.points.size(), {0., 0.});
+      is_point[c] = 1;
+      component_result = pair && pair->first != pair->second ? ERROR_WRONG_PARAMETER : OK;
+      component_report.message = component_result == OK ? "" : "the fixed vertices are at the same position";
     }
-    component_report.status = status;
+    component_report.status = component_result;
     component_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - component_start).count();
-    if(status != OK)
-      return finish(status, "component " + std::to_string(c) + ": " + component_report.message);
+  });
+
+  // In component order: the first failure is the call's, whatever ran first.
+  for(std::size_t c = 0; c < r.components; ++c)
+  {
+    Norm_preserving_report& component_report = r.reports[c];
+    if(component_report.status != OK)
+      return finish(component_report.status, "component " + std::to_string(c) + ": " + component_report.message);
     component_report.fixed_a = graph.members[c][component_report.fixed_a]; // the caller's indices
     component_report.fixed_b = graph.members[c][component_report.fixed_b];
+    r.point_components += is_point[c];
     r.objective += component_report.objective;
     r.optimality_gap = (std::max)(r.optimality_gap, component_report.optimality_gap);
-    for(std::size_t k = 0; k < component_uv.size(); ++k)
-      uv[graph.members[c][k]] = component_uv[k];
+    for(std::size_t k = 0; k < component_uv[c].size(); ++k)
+      uv[graph.members[c][k]] = component_uv[c][k];
   }
   if(r.point_components == r.components)
     return finish(ERROR_WRONG_PARAMETER, "the mesh has zero extent: every vertex on a face is at the same position");
@@ -223,8 +234,9 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
 /// dropped), and a face left with two distinct vertices adds its edge. Vertices at exactly the
 /// same position are welded into one (unless `options.weld_coincident_vertices` is `false`).
 /// Each connected component of the graph is parameterized with `Norm_preserving_parameterizer_3`'s
-/// method at one common scale (mesh units, so texel density is uniform); a component of zero
-/// extent is mapped to a point. The components are laid side by side with disjoint bounding
+/// method at one common scale (mesh units, so texel density is uniform), several at once on a
+/// TBB build (with the same result as on one thread); a component of zero extent is mapped to
+/// a point. The components are laid side by side with disjoint bounding
 /// boxes, the layout is fitted into texture space and tiled, and the uv of every vertex on a
 /// face is written into `uvmap` (a welded vertex gets the uv of its weld). Vertices on no face
 /// are left as they were.
