@@ -156,7 +156,7 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
   r.reports.resize(r.components);
   // The components are independent: on a TBB build they run at once, each as it would alone,
   // so the bits do not depend on the number of threads (doc/decisions.md, the QP's solver).
-  NP::parallel_for_each_index(r.components, [&](std::size_t c) {
+  NP::parallel_for_each_task(r.components, [&](std::size_t c) {
     const auto component_start = std::chrono::steady_clock::now();
     Norm_preserving_geometry geometry = NP::component_geometry(graph, c, edges_of, local);
     Norm_preserving_report& component_report = r.reports[c];

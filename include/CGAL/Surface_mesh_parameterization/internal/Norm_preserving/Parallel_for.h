@@ -16,6 +16,7 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 namespace CGAL {
@@ -37,6 +38,19 @@ void parallel_for_each_index(std::size_t count, const Function& f)
 #endif
   for(std::size_t i = 0; i < count; ++i)
     f(i);
+}
+
+// Calls f(0), ..., f(count - 1) like parallel_for_each_index(), for pieces that run parallel
+// loops of their own: a thread that waits inside one piece's loop helps only that piece (it
+// does not start another piece, which would hold up the loop it waits on).
+template <typename Function>
+void parallel_for_each_task(std::size_t count, const Function& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  parallel_for_each_index(count, [&](std::size_t i) { tbb::this_task_arena::isolate([&] { f(i); }); });
+#else
+  parallel_for_each_index(count, f);
+#endif
 }
 
 // Calls f(begin, end) on consecutive blocks of [0, size) of `block` indices (the last one
