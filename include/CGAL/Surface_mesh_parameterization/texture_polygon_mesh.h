@@ -236,10 +236,9 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
 /// Each connected component of the graph is parameterized with `Norm_preserving_parameterizer_3`'s
 /// method at one common scale (mesh units, so texel density is uniform), several at once on a
 /// TBB build (with the same result as on one thread); a component of zero extent is mapped to
-/// a point. The components are laid side by side with disjoint bounding
-/// boxes, the layout is fitted into texture space and tiled, and the uv of every vertex on a
-/// face is written into `uvmap` (a welded vertex gets the uv of its weld). Vertices on no face
-/// are left as they were.
+/// a point. The components are laid side by side with disjoint bounding boxes, the layout is
+/// fitted into texture space and tiled, and the uv of every vertex on a face is written into
+/// `uvmap` (a welded vertex gets the uv of its weld). Vertices on no face are left as they were.
 ///
 /// On failure nothing is written, `report->message` says why, and the code is:
 /// - `ERROR_EMPTY_MESH`: no face;
