@@ -18,9 +18,13 @@
 // is close to geometric: the rule stops when the decrease still to come, extrapolated from the
 // last two decreases (d2 r / (1 - r), r = d2 / d1), is at most the tolerance times f (or the
 // gap's floor, Dual_bound.h, near a zero optimum) at two checks in a row (doc/performance.md,
-// change 7; doc/decisions.md). The returned point is the last feasible one,
-// so it satisfies every constraint exactly, and its distance to the optimum is certified by a
-// dual bound from the multipliers (Dual_bound.h). In the certified mode the solve goes on until
+// change 7; doc/decisions.md). On a slow tail the default mode tries the polish described
+// below as well: from iteration 150 (later on a mesh whose factorization costs more per entry
+// of its factor), then each time the iteration count has doubled, three times at most; a try
+// that certifies the tolerance ends the solve (doc/performance.md, change 15). The returned
+// point is the last feasible one, so it satisfies every constraint exactly, and its distance
+// to the optimum is certified by a dual bound from the multipliers (Dual_bound.h). In the
+// certified mode the solve goes on until
 // that certificate itself is at most the tolerance: from the point where the default rule would
 // stop, the bound is computed every 25 iterations, and the exact optimum on the active set
 // ADMM has found (Active_set_polish.h, whose multipliers make the bound tight) is tried then,
@@ -71,6 +75,13 @@ constexpr double admm_default_tolerance = 2.5e-5; // of Norm_preserving_ADMM_sol
 // wants more than `polish_shrink` times the turns the round before wanted, the turns a round
 // are limited to half of those, the most wrong first; a try ends when a round wants more than
 // `polish_growth_limit` times the fewest turns wanted so far (doc/performance.md, change 9).
+// The default mode tries the polish too, on a slow tail: from iteration
+// `polish_default_minimum`, or later on a mesh whose factorization costs more per entry of the
+// factor (a polish round factors a system of about twice the Laplacian's unknowns: about
+// `polish_default_factor` times the factor's work per entry in iterations for the rounds of a
+// try), then each time the iteration count has doubled (doc/performance.md, change 15).
+constexpr int polish_default_minimum = 150;
+constexpr double polish_default_factor = 5;
 constexpr double polish_turn_tolerance = 1e-9;
 constexpr int polish_rounds = 24;
 constexpr double polish_shrink = 0.7;
@@ -231,8 +242,14 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   Extrapolated_stop stop(settings.certified ? admm_default_tolerance : settings.tolerance, gap_floor * scale);
   bool settled = false;        // the certified mode: the rule has stopped once
   int certified_at = 0;        // the iteration of the last certificate
-  int next_polish = 0;         // the certified mode: the iteration of the next polish,
-  int polishes_left = 3;       // and how many more may be tried
+  int next_polish = 0;         // the iteration of the next polish (the default mode's first:
+  int polishes_left = 3;       // a slow tail), and how many more may be tried
+  if(!settings.certified)
+  {
+    const double work_per_entry = cholesky.factorization_work() / double((std::max)(cholesky.entries(), std::size_t(1)));
+    const double first = (std::max)(double(polish_default_minimum), polish_default_factor * work_per_entry);
+    next_polish = first < 1e9 ? int(first) : std::numeric_limits<int>::max();
+  }
   bool gap_is_current = false; // result.gap is that of `feasible`
   auto multipliers = [&]() { // of the constraints a, b >= 0, from the scaled ones
     std::vector<std::array<double, 2> > y(w);
@@ -369,6 +386,16 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     {
       result.outcome = Admm_outcome::CONVERGED;
       break;
+    }
+    if(!settings.certified && k >= next_polish && polishes_left > 0)
+    {
+      next_polish = 2 * k;
+      --polishes_left;
+      if(polish())
+      {
+        result.outcome = Admm_outcome::CONVERGED;
+        break;
+      }
     }
     if(settled && k - certified_at >= certify_every)
     {
