@@ -28,10 +28,10 @@ namespace Surface_mesh_parameterization {
 /// \ingroup PkgNormPreservingParameterizationMethods
 /// The combination initial guess of Lai & Cheng (Section 4.2), which brings z into the
 /// XY-MinMax guess: the weighted mean of the XY-MinMax guesses (`XY_min_max_initial_guess`,
-/// each in `[0,1]^2`) of copies of the model rotated about several axes and, optionally, with its own
-/// weight, of the sphere map `S(u,v) = (cos v cos u, cos v sin u, sin v)` about the centroid:
-/// `u = atan2(y - cy, x - cx)` in `[0, 2 pi)` and `v = asin((z - cz) / r)`, scaled to `[0,1]^2`
-/// (a vertex at the centroid gets `u = v = 0`).
+/// each in `[0,1]^2`) of copies of the model rotated about several axes and, optionally, with
+/// its own weight, of the sphere map `S(u,v) = (cos v cos u, cos v sin u, sin v)` about the
+/// centroid: `u = atan2(y - cy, x - cx)` in `[0, 2 pi)` and `v = asin((z - cz) / r)`, scaled to
+/// `[0,1]^2` (a vertex at the centroid gets `u = v = 0`).
 ///
 /// A rotated copy with zero extent in x or in y has no XY-MinMax guess: it is left out of the
 /// mean. The guess fails if nothing is left.

@@ -40,9 +40,10 @@ struct Interior_point_statistics
 /// `min 1/2 x'Px + q'x + r  s.t.  l <= Ax <= u`.
 ///
 /// The exact solver of `Norm_preserving_parameterizer_3` (through `Norm_preserving_QP_solver`),
-/// and a replacement for `CGAL::OSQP_quadratic_program_traits` anywhere. It reaches the optimum to a relative
-/// tolerance (default 1e-10) on residuals and duality gap; where the optimum is not unique it
-/// returns (to tolerance) the analytic centre of the optimal set, a deterministic choice.
+/// and a replacement for `CGAL::OSQP_quadratic_program_traits` anywhere. It reaches the optimum
+/// to a relative tolerance (default 1e-10) on residuals and duality gap; where the optimum is
+/// not unique it returns (to tolerance) the analytic centre of the optimal set, a deterministic
+/// choice.
 ///
 /// Bounds of magnitude at least 1e30 (and infinities) are absent. A row with `l == u` must have
 /// exactly one nonzero coefficient: it fixes that variable, which is then eliminated exactly.

@@ -166,9 +166,8 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
     const bool has_extent = std::any_of(geometry.edges.begin(), geometry.edges.end(), [&](const auto& e) {
       return geometry.points[e[0]] != geometry.points[e[1]];
     });
-    Error_code component_result = OK;
     if(has_extent)
-      component_result = pipeline.run(std::move(geometry), pair, component_uv[c], component_report);
+      component_report.status = pipeline.run(std::move(geometry), pair, component_uv[c], component_report);
     else
     {
       // Every vertex at one position: the optimum of Eq. 5 is a point.
@@ -178,10 +177,9 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
       component_report.optimality_gap = 0;
       component_uv[c].assign(geometry.points.size(), {0., 0.});
       is_point[c] = 1;
-      component_result = pair && pair->first != pair->second ? ERROR_WRONG_PARAMETER : OK;
-      component_report.message = component_result == OK ? "" : "the fixed vertices are at the same position";
+      component_report.status = pair && pair->first != pair->second ? ERROR_WRONG_PARAMETER : OK;
+      component_report.message = component_report.status == OK ? "" : "the fixed vertices are at the same position";
     }
-    component_report.status = component_result;
     component_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - component_start).count();
   });
 

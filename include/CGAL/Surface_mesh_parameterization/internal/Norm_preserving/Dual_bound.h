@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A certified lower bound on the optimum of the sign-constrained QP (Eq. 5), by Lagrangian
-// duality (doc/decisions.md, "The QP and its solver"). With the edge values z = A x + c (A: su (u_i - u_j) and
-// sv (v_i - v_j) of the free vertices, c: the fixed vertices' part) the QP is
+// duality (doc/decisions.md, "The QP and its solver"). With the edge values z = A x + c (A: su
+// (u_i - u_j) and sv (v_i - v_j) of the free vertices, c: the fixed vertices' part) the QP is
 //   min phi(z) = sum_e (l_e - a_e - b_e)^2  s.t.  z = A x + c,  z >= 0,
 // and for any multiplier y with A'y = 0 the dual function
 //   g(y) = y'c + sum_e min_{a, b >= 0} [(l_e - a - b)^2 - ya a - yb b]

@@ -18,21 +18,21 @@
 // is close to geometric: the rule stops when the decrease still to come, extrapolated from the
 // last two decreases (d2 r / (1 - r), r = d2 / d1), is at most the tolerance times f (or the
 // gap's floor, Dual_bound.h, near a zero optimum) at two checks in a row (doc/performance.md,
-// change 7; doc/decisions.md). On a slow tail the default mode tries the polish described
-// below as well: from iteration 150 (later on a mesh whose factorization costs more per entry
-// of its factor), then each time the iteration count has doubled, three times at most; a try
-// that certifies the tolerance ends the solve (doc/performance.md, change 15). The returned
-// point is the last feasible one, so it satisfies every constraint exactly, and its distance
-// to the optimum is certified by a dual bound from the multipliers (Dual_bound.h). In the
-// certified mode the solve goes on until
-// that certificate itself is at most the tolerance: from the point where the default rule would
-// stop, the bound is computed every 25 iterations, and the exact optimum on the active set
-// ADMM has found (Active_set_polish.h, whose multipliers make the bound tight) is tried then,
-// and again each time the iteration count has doubled, three times at most: each try corrects
-// the active set up to 24 times (one factorization each), turning only constraints violated,
-// or of negative multiplier, beyond round-off, and fewer at a time once the corrections stop
-// shrinking: it settles at the default's stopping point on 34 of the 35 benchmark meshes of up
-// to 50,000 vertices, and on cow x3 (doc/performance.md, changes 8 and 9).
+// change 7; doc/decisions.md). On a slow tail the default mode tries the polish described below
+// as well: from iteration 150 (later on a mesh whose factorization costs more per entry of its
+// factor), then each time the iteration count has doubled, three times at most; a try that
+// certifies the tolerance ends the solve (doc/performance.md, change 15). The returned point is
+// the last feasible one, so it satisfies every constraint exactly, and its distance to the
+// optimum is certified by a dual bound from the multipliers (Dual_bound.h). In the certified
+// mode the solve goes on until that certificate itself is at most the tolerance: from the point
+// where the default rule would stop, the bound is computed every 25 iterations, and the exact
+// optimum on the active set ADMM has found (Active_set_polish.h, whose multipliers make the
+// bound tight) is tried then, and again each time the iteration count has doubled, three times
+// at most: each try corrects the active set up to 24 times (one factorization each), turning
+// only constraints violated, or of negative multiplier, beyond round-off, and fewer at a time
+// once the corrections stop shrinking: it settles at the default's stopping point on 34 of the
+// 35 benchmark meshes of up to 50,000 vertices, and on cow x3 (doc/performance.md, changes 8
+// and 9).
 //
 // Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
 // edge loops run in blocks of edges, the right-hand side is gathered per free vertex
@@ -246,8 +246,8 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   int polishes_left = 3;       // a slow tail), and how many more may be tried
   if(!settings.certified)
   {
-    const double work_per_entry = cholesky.factorization_work() / double((std::max)(cholesky.entries(), std::size_t(1)));
-    const double first = (std::max)(double(polish_default_minimum), polish_default_factor * work_per_entry);
+    const double first =
+      (std::max)(double(polish_default_minimum), polish_default_factor * cholesky.factorization_work_per_entry());
     next_polish = first < 1e9 ? int(first) : std::numeric_limits<int>::max();
   }
   bool gap_is_current = false; // result.gap is that of `feasible`

@@ -87,8 +87,9 @@ inline bool euclidean_start(const Norm_preserving_geometry& geometry, const std:
   return true;
 }
 
-// The stress at `uv` (the Euclidean objective, Eq. 2 with q = 2) and, in `rhs`, the right-hand side of the SMACOF step from `uv`:
-// (B(uv) uv)_f - L_fF uv_F over the free vertices, u and v interleaved. One pass over the edges.
+// The stress at `uv` (the Euclidean objective, Eq. 2 with q = 2) and, in `rhs`, the right-hand
+// side of the SMACOF step from `uv`: (B(uv) uv)_f - L_fF uv_F over the free vertices, u and v
+// interleaved. One pass over the edges.
 inline double stress_and_step_rhs(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                                   const std::vector<int>& free_index, const UV_vector& uv, std::vector<double>& rhs)
 {

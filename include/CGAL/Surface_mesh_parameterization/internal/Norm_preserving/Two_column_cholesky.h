@@ -67,12 +67,13 @@ public:
     Two_column_cholesky result;
     if(!result.factor(lower))
       return false;
+    double work = 0;
     for(std::size_t j = 0; j < result.m_n; ++j)
     {
       const double count = double(result.m_first[j + 1] - result.m_first[j]);
-      result.m_factorization_work += count * count;
+      work += count * count;
     }
-    result.m_entries = std::size_t(result.m_first[result.m_n]);
+    result.m_work_per_entry = work / double((std::max)(result.m_first[result.m_n], 1));
     result.form_supernodes(result.split_into_parts());
     *this = std::move(result);
     return true;
@@ -123,10 +124,9 @@ public:
   // The position of each unknown in the order the factor eliminates them.
   const std::vector<int>& positions() const { return m_position; }
 
-  // The entries of the factor, and the work of factoring (the sum over its columns of their
-  // squared entry counts, proportional to the flops).
-  std::size_t entries() const { return m_entries; }
-  double factorization_work() const { return m_factorization_work; }
+  // The work of factoring per entry of the factor: the sum over its columns of their squared
+  // entry counts (proportional to the flops), over the entries.
+  double factorization_work_per_entry() const { return m_work_per_entry; }
 
   // The number of columns solved on one thread (the top): all of them for a small factor.
   std::size_t sequential_columns() const { return m_top.size(); }
@@ -487,8 +487,8 @@ private:
     m_part_first.pop_back();
   }
 
-  std::size_t m_n = 0, m_entries = 0;
-  double m_factorization_work = 0;
+  std::size_t m_n = 0;
+  double m_work_per_entry = 0;
   std::vector<int> m_first;         // the simplicial factor by columns, diagonal first, until
   std::vector<int> m_rows;          // form_supernodes() stores it by supernodes
   std::vector<double> m_values;
