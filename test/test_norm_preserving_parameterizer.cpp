@@ -434,6 +434,42 @@ TEST(TwoColumnCholesky, SolvesByRunsOfColumns)
   EXPECT_LT(cholesky.supernode_count(), std::size_t(laplacian.rows()) * 3 / 4);
 }
 
+// Where the ADMM stops on a component from a skewed start: its point, the factored Laplacian,
+// and the constraints at or near equality there (within 1e-4 of the mean L1 edge length), the
+// active set a polish starts from.
+struct Admm_stop
+{
+  SMP::Norm_preserving_geometry geometry;
+  std::vector<double> lengths;
+  Skewed_start start;
+  SMP::internal::Norm_preserving::UV_vector uv;
+  SMP::internal::Norm_preserving::Admm_state state;
+  SMP::internal::Norm_preserving::Active_set active;
+  std::size_t active_count = 0;
+  std::vector<std::size_t> order; // the polish's, along the Laplacian's factor
+
+  explicit Admm_stop(const Mesh& mesh)
+    : geometry(component_geometry(mesh)), lengths(SMP::internal::Norm_preserving::edge_l1_lengths(geometry)),
+      start(skewed_start(geometry)), uv(start.guess)
+  {
+    namespace NP = SMP::internal::Norm_preserving;
+    const std::size_t m = geometry.edges.size();
+    const NP::Admm_result result = NP::solve_sign_constrained_admm(
+      geometry, lengths, start.signs, start.fixed, NP::Admm_settings{NP::admm_default_tolerance, 20000, 60., false}, uv,
+      &state);
+    EXPECT_EQ(result.outcome, NP::Admm_outcome::CONVERGED);
+    const double near = 1e-4 * std::accumulate(lengths.begin(), lengths.end(), 0.) / double(m);
+    active.resize(m);
+    for(std::size_t e = 0; e < m; ++e)
+      for(int c = 0; c < 2; ++c)
+      {
+        active[e][c] = NP::sign_constraint_value(geometry, start.signs, uv, e, c) <= near;
+        active_count += active[e][c] ? 1 : 0;
+      }
+    order = NP::elimination_order(NP::free_vertex_indices(geometry.points.size(), start.fixed), state.cholesky.positions());
+  }
+};
+
 // The polish numbers its unknowns along the elimination order of the Laplacian's factor (AMD,
 // or METIS on bunny00 where CHOLMOD is configured) and does not order its systems anew: on the
 // active set where the ADMM stops, the factor of the polish's normal equations in that order
@@ -444,32 +480,11 @@ TEST(ActiveSetPolish, FactorsInTheLaplaciansOrderWithLittleFill)
   namespace NP = SMP::internal::Norm_preserving;
   for(const std::string name : {"cow", "lion", "mushroom", "bunny00"})
   {
-    const SMP::Norm_preserving_geometry geometry = component_geometry(np_test::load_mesh(name));
-    const std::size_t m = geometry.edges.size();
-    const Skewed_start start = skewed_start(geometry);
-    const NP::Edge_signs& signs = start.signs;
-    const std::array<NP::Fixed_vertex, 2>& fixed = start.fixed;
-    NP::UV_vector uv = start.guess;
-    const std::vector<double> lengths = NP::edge_l1_lengths(geometry);
-    NP::Admm_state state;
-    const NP::Admm_result result = NP::solve_sign_constrained_admm(
-      geometry, lengths, signs, fixed, NP::Admm_settings{NP::admm_default_tolerance, 20000, 60., false}, uv, &state);
-    ASSERT_EQ(result.outcome, NP::Admm_outcome::CONVERGED) << name;
-    // The constraints at or near equality (within 1e-4 of the mean L1 edge length).
-    const double near = 1e-4 * std::accumulate(lengths.begin(), lengths.end(), 0.) / double(m);
-    NP::Active_set active(m);
-    std::size_t active_count = 0;
-    for(std::size_t e = 0; e < m; ++e)
-      for(int c = 0; c < 2; ++c)
-      {
-        active[e][c] = NP::sign_constraint_value(geometry, signs, uv, e, c) <= near;
-        active_count += active[e][c] ? 1 : 0;
-      }
-    EXPECT_GT(active_count, m / 20) << name;
-    const std::vector<std::size_t> order =
-      NP::elimination_order(NP::free_vertex_indices(geometry.points.size(), fixed), state.cholesky.positions());
+    const Admm_stop stop(np_test::load_mesh(name));
+    EXPECT_GT(stop.active_count, stop.geometry.edges.size() / 20) << name;
     NP::Active_set_system system;
-    ASSERT_TRUE(NP::active_set_system(geometry, lengths, signs, fixed, order, active, system)) << name;
+    ASSERT_TRUE(NP::active_set_system(stop.geometry, stop.lengths, stop.start.signs, stop.start.fixed, stop.order,
+                                      NP::active_set_clusters(stop.geometry, stop.active), system)) << name;
     const Eigen::SimplicialLDLT<NP::Sparse_matrix, Eigen::Lower, Eigen::NaturalOrdering<int> > given(system.normal);
     const Eigen::SimplicialLDLT<NP::Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > amd(system.normal);
     ASSERT_EQ(given.info(), Eigen::Success) << name;
@@ -477,6 +492,81 @@ TEST(ActiveSetPolish, FactorsInTheLaplaciansOrderWithLittleFill)
     const double given_size = double(given.matrixL().nestedExpression().nonZeros()),
                  amd_size = double(amd.matrixL().nestedExpression().nonZeros());
     EXPECT_LE(given_size, 1.25 * amd_size) << name;
+  }
+}
+
+// A polish round whose active set ties the same clusters as the round before (an active edge
+// left on a cycle of active edges, an edge joined between vertices already tied) keeps that
+// round's solution, bit for bit, whose objective a new factorization from it matches within
+// 1e-12 (it moves the point only along directions of near-zero curvature), and only the
+// multipliers change; an active set that splits a cluster is solved anew.
+TEST(ActiveSetPolish, KeepsTheSolutionWhenTheClustersStay)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  for(const std::string name : {"cow", "mushroom"})
+  {
+    const Admm_stop stop(np_test::load_mesh(name));
+    const std::size_t m = stop.geometry.edges.size();
+    const std::vector<std::array<double, 2> > estimate(m, {0., 0.});
+    auto solve = [&](const NP::Active_set& active, const NP::UV_vector& from, NP::Active_set_clusters& clusters,
+                     NP::UV_vector& uv, std::vector<std::array<double, 2> >& y) {
+      return NP::solve_on_active_set(stop.geometry, stop.lengths, stop.start.signs, stop.start.fixed, stop.order, active,
+                                     from, clusters, estimate, uv, y);
+    };
+    auto objective = [&](const NP::UV_vector& uv) {
+      return NP::sign_constrained_objective(stop.geometry, stop.lengths, stop.start.signs, uv);
+    };
+    NP::Active_set_clusters clusters;
+    NP::UV_vector first, kept, fresh;
+    std::vector<std::array<double, 2> > y_first, y_kept, y_fresh;
+    ASSERT_TRUE(solve(stop.active, stop.uv, clusters, first, y_first)) << name;
+
+    // The first active constraint whose leaving keeps the clusters, the first whose leaving
+    // splits one, and the first inactive one between tied vertices (if any).
+    std::ptrdiff_t left = -1, bridge = -1, joined = -1; // 2 e + c
+    for(std::size_t k = 0; k < 2 * m && (left < 0 || bridge < 0 || joined < 0); ++k)
+    {
+      const std::size_t e = k / 2;
+      const int c = int(k % 2);
+      if(!stop.active[e][c])
+      {
+        if(joined < 0 && clusters[c][stop.geometry.edges[e][0]] == clusters[c][stop.geometry.edges[e][1]])
+          joined = std::ptrdiff_t(k);
+        continue;
+      }
+      NP::Active_set without = stop.active;
+      without[e][c] = 0;
+      std::ptrdiff_t& found = NP::active_set_clusters(stop.geometry, without) == clusters ? left : bridge;
+      if(found < 0)
+        found = std::ptrdiff_t(k);
+    }
+    ASSERT_GE(left, 0) << name;
+    ASSERT_GE(bridge, 0) << name;
+    NP::Active_set same = stop.active, split = stop.active;
+    same[std::size_t(left) / 2][std::size_t(left) % 2] = 0;
+    if(joined >= 0)
+      same[std::size_t(joined) / 2][std::size_t(joined) % 2] = 1;
+    split[std::size_t(bridge) / 2][std::size_t(bridge) % 2] = 0;
+
+    NP::Active_set_clusters after_first = clusters;
+    ASSERT_TRUE(solve(same, first, after_first, kept, y_kept)) << name;
+    EXPECT_EQ(kept, first) << name;
+    EXPECT_EQ(after_first, clusters) << name;
+    NP::Active_set_clusters none;
+    ASSERT_TRUE(solve(same, first, none, fresh, y_fresh)) << name;
+    EXPECT_NEAR(objective(kept), objective(fresh), 1e-12 * objective(fresh)) << name;
+    // The constraint that left takes the multiplier of an inactive one, -2 r_e.
+    const std::size_t e = std::size_t(left) / 2;
+    const double r = NP::sign_constrained_residual(stop.geometry, stop.lengths, stop.start.signs, kept, e);
+    EXPECT_EQ(y_kept[e][std::size_t(left) % 2], -2. * r) << name;
+
+    NP::Active_set_clusters split_clusters = clusters, split_none;
+    NP::UV_vector split_kept, split_fresh;
+    ASSERT_TRUE(solve(split, first, split_clusters, split_kept, y_kept)) << name;
+    EXPECT_NE(split_clusters, clusters) << name;
+    ASSERT_TRUE(solve(split, first, split_none, split_fresh, y_fresh)) << name;
+    EXPECT_EQ(split_kept, split_fresh) << name;
+    EXPECT_NE(split_kept, first) << name;
   }
 }
 

@@ -8,15 +8,16 @@
 // equalities is an unconstrained least-squares problem in the clusters' values (a cluster
 // holding a fixed vertex takes its value). Its normal equations, coupled in u and v through
 // the residuals, are factored once (Regularized_normal_cholesky, below); they are singular
-// where the optimum is not unique, and proximal steps pick the optimum nearest the start.
+// where the optimum is not unique, and proximal steps pick the optimum nearest the start. An
+// active set that ties the same clusters as the last one has the same solution: it is kept.
 //
 // The multipliers follow from the solution: on an inactive constraint the gradient of the
 // objective, y = -2 r_e; on the active edges of a cluster, the values that make A'y vanish at
 // every free vertex, found on a spanning tree of the cluster from its leaves up (the other
-// active edges keep the ADMM's estimate, clamped to a nonnegative multiplier). At the optimum with the right active set this y
-// makes the dual bound of Dual_bound.h meet the objective; a wrong active set shows as a
-// violated constraint or a negative multiplier mu = -2 r_e - y, and is corrected: violated
-// constraints join it, those of negative multiplier leave it.
+// active edges keep the ADMM's estimate, clamped to a nonnegative multiplier). At the optimum
+// with the right active set this y makes the dual bound of Dual_bound.h meet the objective; a
+// wrong active set shows as a violated constraint or a negative multiplier mu = -2 r_e - y, and
+// is corrected: violated constraints join it, those of negative multiplier leave it.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ACTIVE_SET_POLISH_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ACTIVE_SET_POLISH_H
@@ -97,30 +98,15 @@ private:
 #endif
 };
 
-// Eq. 5 with the constraints of an active set as equalities: per coordinate, the clusters of
-// vertices the active edges tie together, and the regularized normal equations in the values
-// of the clusters that hold no fixed vertex.
-struct Active_set_system
-{
-  std::array<std::vector<std::size_t>, 2> cluster; // per vertex: its cluster's root
-  std::array<std::vector<int>, 2> unknown;         // per cluster root: its unknown, -1 if fixed
-  std::array<std::vector<double>, 2> value;        // per cluster root: its value if fixed
-  Sparse_matrix normal;                            // lower triangle, eps added to the diagonal
-  Eigen::VectorXd rhs;
-  double eps = 0;
-};
+// Per coordinate and vertex, the root of its cluster (the vertices the active edges tie
+// together): the cluster's lowest vertex, so that two active sets tie the same clusters if and
+// only if their roots are equal.
+typedef std::array<std::vector<std::size_t>, 2> Active_set_clusters;
 
-// The system of the constraints of `active`, its unknowns numbered along `order` (every vertex
-// once: elimination_order()); false if the active set ties the two fixed vertices to
-// different values.
-inline bool active_set_system(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
-                              const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
-                              const std::vector<std::size_t>& order, const Active_set& active, Active_set_system& system)
+inline Active_set_clusters active_set_clusters(const Norm_preserving_geometry& geometry, const Active_set& active)
 {
-  const std::size_t n = geometry.points.size(), m = geometry.edges.size();
-  std::array<std::vector<std::size_t>, 2>& cluster = system.cluster;
-  std::array<std::vector<int>, 2>& unknown = system.unknown;
-  std::array<std::vector<double>, 2>& value = system.value;
+  const std::size_t n = geometry.points.size();
+  Active_set_clusters cluster;
   for(int c = 0; c < 2; ++c)
   {
     std::vector<std::size_t>& parent = cluster[c];
@@ -131,7 +117,7 @@ inline bool active_set_system(const Norm_preserving_geometry& geometry, const st
         i = parent[i] = parent[parent[i]];
       return i;
     };
-    for(std::size_t e = 0; e < m; ++e)
+    for(std::size_t e = 0; e < geometry.edges.size(); ++e)
       if(active[e][c])
       {
         const std::size_t a = find(geometry.edges[e][0]), b = find(geometry.edges[e][1]);
@@ -139,11 +125,41 @@ inline bool active_set_system(const Norm_preserving_geometry& geometry, const st
       }
     for(std::size_t i = 0; i < n; ++i)
       parent[i] = find(i);
+  }
+  return cluster;
+}
+
+// Eq. 5 with the constraints of an active set as equalities: its clusters, and the regularized
+// normal equations in the values of the clusters that hold no fixed vertex.
+struct Active_set_system
+{
+  Active_set_clusters cluster;
+  std::array<std::vector<int>, 2> unknown;         // per cluster root: its unknown, -1 if fixed
+  std::array<std::vector<double>, 2> value;        // per cluster root: its value if fixed
+  Sparse_matrix normal;                            // lower triangle, eps added to the diagonal
+  Eigen::VectorXd rhs;
+  double eps = 0;
+};
+
+// The system of the active set of `clusters`, its unknowns numbered along `order` (every vertex
+// once: elimination_order()); false if the active set ties the two fixed vertices to
+// different values.
+inline bool active_set_system(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                              const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
+                              const std::vector<std::size_t>& order, const Active_set_clusters& clusters,
+                              Active_set_system& system)
+{
+  const std::size_t n = geometry.points.size(), m = geometry.edges.size();
+  const Active_set_clusters& cluster = system.cluster = clusters;
+  std::array<std::vector<int>, 2>& unknown = system.unknown;
+  std::array<std::vector<double>, 2>& value = system.value;
+  for(int c = 0; c < 2; ++c)
+  {
     unknown[c].assign(n, -2); // -2: not numbered yet
     value[c].assign(n, 0.);
     for(const Fixed_vertex& f : fixed)
     {
-      const std::size_t r = parent[f.index];
+      const std::size_t r = cluster[c][f.index];
       if(unknown[c][r] == -1 && value[c][r] != f.target[c])
         return false;
       unknown[c][r] = -1;
@@ -211,21 +227,19 @@ inline bool active_set_system(const Norm_preserving_geometry& geometry, const st
   return true;
 }
 
-// The solution of Eq. 5 with the constraints of `active` as equalities nearest to `start`,
-// written to `uv`, and its multipliers to `y` (per edge, for a and b), those of the active
-// edges off the spanning trees taken from `estimate`; false if the active set ties the two
-// fixed vertices to different values. `order` as for active_set_system().
-inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
-                                const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
-                                const std::vector<std::size_t>& order, const Active_set& active, const UV_vector& start,
-                                const std::vector<std::array<double, 2> >& estimate, UV_vector& uv,
-                                std::vector<std::array<double, 2> >& y)
+// The solution of Eq. 5 with the constraints of the active set of `clusters` as equalities
+// nearest to `start`, written to `uv`; false if the active set ties the two fixed vertices to
+// different values. `order` as for active_set_system().
+inline bool solve_on_clusters(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                              const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
+                              const std::vector<std::size_t>& order, const Active_set_clusters& clusters,
+                              const UV_vector& start, UV_vector& uv)
 {
   Active_set_system system;
-  if(!active_set_system(geometry, lengths, signs, fixed, order, active, system))
+  if(!active_set_system(geometry, lengths, signs, fixed, order, clusters, system))
     return false;
-  const std::size_t n = geometry.points.size(), m = geometry.edges.size();
-  const std::array<std::vector<std::size_t>, 2>& cluster = system.cluster;
+  const std::size_t n = geometry.points.size();
+  const Active_set_clusters& cluster = system.cluster;
   const std::array<std::vector<int>, 2>& unknown = system.unknown;
   const std::array<std::vector<double>, 2>& value = system.value;
   const double eps = system.eps;
@@ -259,6 +273,33 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
       const std::size_t r = cluster[c][i];
       uv[i][c] = unknown[c][r] < 0 ? value[c][r] : x[unknown[c][r]];
     }
+  return true;
+}
+
+// The solution of Eq. 5 with the constraints of `active` as equalities nearest to `start`,
+// written to `uv`, and its multipliers to `y` (per edge, for a and b), those of the active
+// edges off the spanning trees taken from `estimate`; false if the active set ties the two
+// fixed vertices to different values. `clusters` holds those of the active set `start` is the
+// solution on (or nothing) and receives those of `active`: when they are the same (the
+// constraints that left the active set were on cycles of active edges, those that joined it
+// tied vertices already tied), `start` is the solution on `active` too, and nothing is factored
+// (doc/performance.md, change 16). `order` as for active_set_system().
+inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                                const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
+                                const std::vector<std::size_t>& order, const Active_set& active, const UV_vector& start,
+                                Active_set_clusters& clusters, const std::vector<std::array<double, 2> >& estimate,
+                                UV_vector& uv, std::vector<std::array<double, 2> >& y)
+{
+  const std::size_t n = geometry.points.size(), m = geometry.edges.size();
+  Active_set_clusters tied = active_set_clusters(geometry, active);
+  if(tied == clusters)
+    uv = start;
+  else
+  {
+    clusters.swap(tied);
+    if(!solve_on_clusters(geometry, lengths, signs, fixed, order, clusters, start, uv))
+      return false;
+  }
 
   // Multipliers: -2 r_e, then the active edges of a spanning tree of each cluster, from the
   // leaves up, so that A'y vanishes at every free vertex.
