@@ -129,11 +129,10 @@ inline Active_set_clusters active_set_clusters(const Norm_preserving_geometry& g
   return cluster;
 }
 
-// Eq. 5 with the constraints of an active set as equalities: its clusters, and the regularized
+// Eq. 5 with the constraints of an active set as equalities, given its clusters: the regularized
 // normal equations in the values of the clusters that hold no fixed vertex.
 struct Active_set_system
 {
-  Active_set_clusters cluster;
   std::array<std::vector<int>, 2> unknown;         // per cluster root: its unknown, -1 if fixed
   std::array<std::vector<double>, 2> value;        // per cluster root: its value if fixed
   Sparse_matrix normal;                            // lower triangle, eps added to the diagonal
@@ -150,7 +149,7 @@ inline bool active_set_system(const Norm_preserving_geometry& geometry, const st
                               Active_set_system& system)
 {
   const std::size_t n = geometry.points.size(), m = geometry.edges.size();
-  const Active_set_clusters& cluster = system.cluster = clusters;
+  const Active_set_clusters& cluster = clusters;
   std::array<std::vector<int>, 2>& unknown = system.unknown;
   std::array<std::vector<double>, 2>& value = system.value;
   for(int c = 0; c < 2; ++c)
@@ -239,7 +238,7 @@ inline bool solve_on_clusters(const Norm_preserving_geometry& geometry, const st
   if(!active_set_system(geometry, lengths, signs, fixed, order, clusters, system))
     return false;
   const std::size_t n = geometry.points.size();
-  const Active_set_clusters& cluster = system.cluster;
+  const Active_set_clusters& cluster = clusters;
   const std::array<std::vector<int>, 2>& unknown = system.unknown;
   const std::array<std::vector<double>, 2>& value = system.value;
   const double eps = system.eps;
