@@ -495,11 +495,35 @@ TEST(ActiveSetPolish, FactorsInTheLaplaciansOrderWithLittleFill)
   }
 }
 
+// Solving on an active set, from `from`, with what the rounds before left in `rounds`.
+struct Polish_round
+{
+  const Admm_stop& stop;
+  std::vector<std::array<double, 2> > estimate;
+  SMP::internal::Norm_preserving::UV_vector uv;
+  std::vector<std::array<double, 2> > y;
+
+  explicit Polish_round(const Admm_stop& s) : stop(s), estimate(s.geometry.edges.size(), {0., 0.}) { }
+
+  bool solve(const SMP::internal::Norm_preserving::Active_set& active, const SMP::internal::Norm_preserving::UV_vector& from,
+             SMP::internal::Norm_preserving::Active_set_rounds& rounds)
+  {
+    return SMP::internal::Norm_preserving::solve_on_active_set(stop.geometry, stop.lengths, stop.start.signs,
+                                                               stop.start.fixed, stop.order, active, from, rounds,
+                                                               estimate, uv, y);
+  }
+
+  double objective() const
+  {
+    return SMP::internal::Norm_preserving::sign_constrained_objective(stop.geometry, stop.lengths, stop.start.signs, uv);
+  }
+};
+
 // A polish round whose active set ties the same clusters as the round before (an active edge
 // left on a cycle of active edges, an edge joined between vertices already tied) keeps that
 // round's solution, bit for bit, whose objective a new factorization from it matches within
 // 1e-12 (it moves the point only along directions of near-zero curvature), and only the
-// multipliers change; an active set that splits a cluster is solved anew.
+// multipliers change.
 TEST(ActiveSetPolish, KeepsTheSolutionWhenTheClustersStay)
 {
   namespace NP = SMP::internal::Norm_preserving;
@@ -507,24 +531,15 @@ TEST(ActiveSetPolish, KeepsTheSolutionWhenTheClustersStay)
   {
     const Admm_stop stop(np_test::load_mesh(name));
     const std::size_t m = stop.geometry.edges.size();
-    const std::vector<std::array<double, 2> > estimate(m, {0., 0.});
-    auto solve = [&](const NP::Active_set& active, const NP::UV_vector& from, NP::Active_set_clusters& clusters,
-                     NP::UV_vector& uv, std::vector<std::array<double, 2> >& y) {
-      return NP::solve_on_active_set(stop.geometry, stop.lengths, stop.start.signs, stop.start.fixed, stop.order, active,
-                                     from, clusters, estimate, uv, y);
-    };
-    auto objective = [&](const NP::UV_vector& uv) {
-      return NP::sign_constrained_objective(stop.geometry, stop.lengths, stop.start.signs, uv);
-    };
-    NP::Active_set_clusters clusters;
-    NP::UV_vector first, kept, fresh;
-    std::vector<std::array<double, 2> > y_first, y_kept, y_fresh;
-    ASSERT_TRUE(solve(stop.active, stop.uv, clusters, first, y_first)) << name;
+    Polish_round first(stop), kept(stop), fresh(stop);
+    NP::Active_set_rounds rounds;
+    ASSERT_TRUE(first.solve(stop.active, stop.uv, rounds)) << name;
+    const NP::Active_set_clusters& clusters = rounds.clusters;
 
-    // The first active constraint whose leaving keeps the clusters, the first whose leaving
-    // splits one, and the first inactive one between tied vertices (if any).
-    std::ptrdiff_t left = -1, bridge = -1, joined = -1; // 2 e + c
-    for(std::size_t k = 0; k < 2 * m && (left < 0 || bridge < 0 || joined < 0); ++k)
+    // The first active constraint whose leaving keeps the clusters, and the first inactive one
+    // between tied vertices (if any).
+    std::ptrdiff_t left = -1, joined = -1; // 2 e + c
+    for(std::size_t k = 0; k < 2 * m && (left < 0 || joined < 0); ++k)
     {
       const std::size_t e = k / 2;
       const int c = int(k % 2);
@@ -536,37 +551,108 @@ TEST(ActiveSetPolish, KeepsTheSolutionWhenTheClustersStay)
       }
       NP::Active_set without = stop.active;
       without[e][c] = 0;
-      std::ptrdiff_t& found = NP::active_set_clusters(stop.geometry, without) == clusters ? left : bridge;
-      if(found < 0)
-        found = std::ptrdiff_t(k);
+      if(left < 0 && NP::active_set_clusters(stop.geometry, without) == clusters)
+        left = std::ptrdiff_t(k);
     }
     ASSERT_GE(left, 0) << name;
-    ASSERT_GE(bridge, 0) << name;
-    NP::Active_set same = stop.active, split = stop.active;
+    NP::Active_set same = stop.active;
     same[std::size_t(left) / 2][std::size_t(left) % 2] = 0;
     if(joined >= 0)
       same[std::size_t(joined) / 2][std::size_t(joined) % 2] = 1;
-    split[std::size_t(bridge) / 2][std::size_t(bridge) % 2] = 0;
 
-    NP::Active_set_clusters after_first = clusters;
-    ASSERT_TRUE(solve(same, first, after_first, kept, y_kept)) << name;
-    EXPECT_EQ(kept, first) << name;
-    EXPECT_EQ(after_first, clusters) << name;
-    NP::Active_set_clusters none;
-    ASSERT_TRUE(solve(same, first, none, fresh, y_fresh)) << name;
-    EXPECT_NEAR(objective(kept), objective(fresh), 1e-12 * objective(fresh)) << name;
+    NP::Active_set_rounds after_first, none;
+    ASSERT_TRUE(kept.solve(stop.active, stop.uv, after_first)) << name; // the first round again
+    ASSERT_TRUE(kept.solve(same, first.uv, after_first)) << name;
+    EXPECT_EQ(kept.uv, first.uv) << name;
+    EXPECT_EQ(after_first.clusters, clusters) << name;
+    ASSERT_TRUE(fresh.solve(same, first.uv, none)) << name;
+    EXPECT_NEAR(kept.objective(), fresh.objective(), 1e-12 * fresh.objective()) << name;
     // The constraint that left takes the multiplier of an inactive one, -2 r_e.
     const std::size_t e = std::size_t(left) / 2;
-    const double r = NP::sign_constrained_residual(stop.geometry, stop.lengths, stop.start.signs, kept, e);
-    EXPECT_EQ(y_kept[e][std::size_t(left) % 2], -2. * r) << name;
+    const double r = NP::sign_constrained_residual(stop.geometry, stop.lengths, stop.start.signs, kept.uv, e);
+    EXPECT_EQ(kept.y[e][std::size_t(left) % 2], -2. * r) << name;
+  }
+}
 
-    NP::Active_set_clusters split_clusters = clusters, split_none;
-    NP::UV_vector split_kept, split_fresh;
-    ASSERT_TRUE(solve(split, first, split_clusters, split_kept, y_kept)) << name;
-    EXPECT_NE(split_clusters, clusters) << name;
-    ASSERT_TRUE(solve(split, first, split_none, split_fresh, y_fresh)) << name;
-    EXPECT_EQ(split_kept, split_fresh) << name;
-    EXPECT_NE(split_kept, first) << name;
+// A round whose clusters differ from those of the last factorization by a few splits and joins
+// (here: active constraints left that split clusters, inactive edges joined between clusters,
+// one of them the fixed vertex's) is solved on that factorization, bordered: the objective of a
+// new factorization within 1e-12, every cluster at one value, the fixed vertices at theirs.
+// Many more changes than `polish_border` are factored anew, bit for bit as from scratch.
+TEST(ActiveSetPolish, SolvesAFewChangesOnTheLastFactorization)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  for(const std::string name : {"cow", "mushroom"})
+  {
+    const Admm_stop stop(np_test::load_mesh(name));
+    const std::size_t n = stop.geometry.points.size(), m = stop.geometry.edges.size();
+    Polish_round first(stop);
+    NP::Active_set_rounds rounds;
+    ASSERT_TRUE(first.solve(stop.active, stop.uv, rounds)) << name;
+    const NP::Active_set_clusters base = rounds.clusters;
+    ASSERT_EQ(rounds.factored.clusters, base) << name;
+
+    // Changes of the active set, each splitting or joining clusters of `base`.
+    std::vector<std::size_t> splits, joins, fixed_joins; // 2 e + c
+    for(std::size_t k = 0; k < 2 * m; ++k)
+    {
+      const std::size_t e = k / 2, c = k % 2;
+      const std::size_t a = base[c][stop.geometry.edges[e][0]], b = base[c][stop.geometry.edges[e][1]];
+      if(stop.active[e][c])
+      {
+        NP::Active_set without = stop.active;
+        without[e][c] = 0;
+        if(NP::active_set_clusters(stop.geometry, without) != base)
+          splits.push_back(k);
+      }
+      else if(a != b)
+      {
+        const std::size_t f0 = base[c][stop.start.fixed[0].index], f1 = base[c][stop.start.fixed[1].index];
+        if(a == f1 || b == f1) // possibly to another value than the first's
+          continue;
+        (a == f0 || b == f0 ? fixed_joins : joins).push_back(k);
+      }
+    }
+    ASSERT_GE(splits.size(), 2u) << name;
+    ASSERT_GE(joins.size(), 2u) << name;
+    ASSERT_GE(fixed_joins.size(), 1u) << name;
+    auto changed = [&](std::size_t count) {
+      NP::Active_set active = stop.active;
+      std::vector<std::size_t> turns{splits[0], splits[1], joins[0], joins[1], fixed_joins[0]};
+      for(std::size_t k = 2; turns.size() < count && k < (std::max)(splits.size(), joins.size()); ++k)
+        for(const std::vector<std::size_t>* more : {&splits, &joins})
+          if(k < more->size())
+            turns.push_back((*more)[k]);
+      for(std::size_t k : turns)
+        active[k / 2][k % 2] ^= 1;
+      return active;
+    };
+
+    const NP::Active_set few = changed(5);
+    NP::Active_set_rounds bordered_rounds, none;
+    Polish_round bordered(stop), fresh(stop);
+    ASSERT_TRUE(bordered.solve(stop.active, stop.uv, bordered_rounds)) << name; // the first round again
+    ASSERT_TRUE(bordered.solve(few, first.uv, bordered_rounds)) << name;
+    EXPECT_EQ(bordered_rounds.factored.clusters, base) << name; // nothing factored
+    const NP::Active_set_clusters tied = NP::active_set_clusters(stop.geometry, few);
+    EXPECT_EQ(bordered_rounds.clusters, tied) << name;
+    ASSERT_TRUE(fresh.solve(few, first.uv, none)) << name;
+    EXPECT_NEAR(bordered.objective(), fresh.objective(), 1e-12 * fresh.objective()) << name;
+    EXPECT_GT(std::abs(bordered.objective() - first.objective()), 1e-9 * first.objective()) << name;
+    for(std::size_t i = 0; i < n; ++i)
+      for(int c = 0; c < 2; ++c)
+        ASSERT_EQ(bordered.uv[i][std::size_t(c)], bordered.uv[tied[c][i]][std::size_t(c)]) << name << " " << i;
+    for(const NP::Fixed_vertex& f : stop.start.fixed)
+      EXPECT_EQ(bordered.uv[f.index], f.target) << name;
+
+    const NP::Active_set many = changed(4 * NP::polish_border);
+    NP::Active_set_rounds many_rounds, many_none;
+    Polish_round refactored(stop), from_scratch(stop);
+    ASSERT_TRUE(refactored.solve(stop.active, stop.uv, many_rounds)) << name;
+    ASSERT_TRUE(refactored.solve(many, first.uv, many_rounds)) << name;
+    EXPECT_EQ(many_rounds.factored.clusters, NP::active_set_clusters(stop.geometry, many)) << name;
+    ASSERT_TRUE(from_scratch.solve(many, first.uv, many_none)) << name;
+    EXPECT_EQ(refactored.uv, from_scratch.uv) << name;
   }
 }
 

@@ -9,7 +9,9 @@
 // holding a fixed vertex takes its value). Its normal equations, coupled in u and v through
 // the residuals, are factored once (Regularized_normal_cholesky, below); they are singular
 // where the optimum is not unique, and proximal steps pick the optimum nearest the start. An
-// active set that ties the same clusters as the last one has the same solution: it is kept.
+// active set that ties the same clusters as the last one has the same solution: it is kept;
+// one whose clusters differ from those last factored by a few splits and joins is solved on
+// that factorization, bordered by the differences.
 //
 // The multipliers follow from the solution: on an inactive constraint the gradient of the
 // objective, y = -2 r_e; on the active edges of a cluster, the values that make A'y vanish at
@@ -26,12 +28,18 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
+#include <Eigen/LU>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
+#include <map>
 #include <numeric>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -40,6 +48,10 @@ namespace internal {
 namespace Norm_preserving {
 
 using Active_set = std::vector<std::array<char, 2> >; // per edge and coordinate: at equality
+
+// A round whose clusters differ from those of the last factorization by at most this many
+// splits and joins is solved on it, bordered (doc/performance.md, change 17).
+constexpr std::size_t polish_border = 16;
 
 // The vertices in the order the factor of the free-vertex Laplacian eliminates them
 // (`positions`, per free index), the fixed ones last. The polish numbers its unknowns in this
@@ -81,7 +93,12 @@ public:
     return m_ldlt.info() == Eigen::Success && (m_ldlt.vectorD().array() > 0).all();
   }
 
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return solve_dense(b); }
+  Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& b) const { return solve_dense(b); }
+
+private:
+  template <typename Dense>
+  Dense solve_dense(const Dense& b) const
   {
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
     if(m_large)
@@ -90,7 +107,6 @@ public:
     return m_ldlt.solve(b);
   }
 
-private:
   Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower, Eigen::NaturalOrdering<int> > m_ldlt;
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
   Sparse_cholesky m_cholmod;
@@ -226,38 +242,48 @@ inline bool active_set_system(const Norm_preserving_geometry& geometry, const st
   return true;
 }
 
-// The solution of Eq. 5 with the constraints of the active set of `clusters` as equalities
-// nearest to `start`, written to `uv`; false if the active set ties the two fixed vertices to
-// different values. `order` as for active_set_system().
-inline bool solve_on_clusters(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+// A polish round's factored system, kept for the rounds after it (their active sets tie
+// clusters that differ from its own by a few splits and joins: solved bordered on it).
+struct Active_set_factorization
+{
+  Active_set_clusters clusters; // those the system is built on; empty: nothing factored yet
+  Active_set_system system;
+  Regularized_normal_cholesky cholesky;
+};
+
+// What a polish round leaves to the next: the clusters of its active set, and the last
+// factorization.
+struct Active_set_rounds
+{
+  Active_set_clusters clusters; // empty before the first round
+  Active_set_factorization factored;
+};
+
+// Builds and factors the system of the active set of `clusters` in `factored`; false if the
+// active set ties the two fixed vertices to different values, or the system is not positive
+// definite. `order` as for active_set_system().
+inline bool factor_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                               const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
                               const std::vector<std::size_t>& order, const Active_set_clusters& clusters,
-                              const UV_vector& start, UV_vector& uv)
+                              Active_set_factorization& factored)
 {
-  Active_set_system system;
-  if(!active_set_system(geometry, lengths, signs, fixed, order, clusters, system))
+  factored.clusters = Active_set_clusters();
+  if(!active_set_system(geometry, lengths, signs, fixed, order, clusters, factored.system) ||
+     !factored.cholesky.compute(factored.system.normal))
     return false;
-  const std::size_t n = geometry.points.size();
-  const Active_set_clusters& cluster = clusters;
-  const std::array<std::vector<int>, 2>& unknown = system.unknown;
-  const std::array<std::vector<double>, 2>& value = system.value;
-  const double eps = system.eps;
-  const Eigen::Index unknowns = system.normal.rows();
-  Regularized_normal_cholesky cholesky;
-  if(!cholesky.compute(system.normal))
-    return false;
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(unknowns), members = Eigen::VectorXd::Zero(unknowns);
-  for(int c = 0; c < 2; ++c)
-    for(std::size_t i = 0; i < n; ++i)
-      if(unknown[c][cluster[c][i]] >= 0)
-      {
-        x[unknown[c][cluster[c][i]]] += start[i][c];
-        members[unknown[c][cluster[c][i]]] += 1;
-      }
-  x = x.cwiseQuotient(members);
-  for(int step = 0; step < 4; ++step)
+  factored.clusters = clusters;
+  return true;
+}
+
+// Proximal steps x <- argmin |d - C x|^2 + eps |x - x_prev|^2 from `x` (at most four, fewer
+// once a step no longer moves it); `step` takes x_prev and returns the next x. False if a
+// step is not finite.
+template <typename Step>
+bool proximal_steps(const Step& step, Eigen::VectorXd& x)
+{
+  for(int k = 0; k < 4; ++k)
   {
-    const Eigen::VectorXd next = cholesky.solve(system.rhs + eps * x);
+    const Eigen::VectorXd next = step(x);
     if(!next.allFinite())
       return false;
     const bool still = (next - x).lpNorm<Eigen::Infinity>() <= 1e-15 * (1. + x.lpNorm<Eigen::Infinity>());
@@ -265,12 +291,225 @@ inline bool solve_on_clusters(const Norm_preserving_geometry& geometry, const st
     if(still)
       break;
   }
+  return true;
+}
+
+// The solution on the factored system's own clusters nearest to `start`, written to `uv`.
+inline bool solve_factored(const Active_set_factorization& factored, const UV_vector& start, UV_vector& uv)
+{
+  const std::size_t n = start.size();
+  const Active_set_clusters& cluster = factored.clusters;
+  const Active_set_system& system = factored.system;
+  const Eigen::Index unknowns = system.normal.rows();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(unknowns), members = Eigen::VectorXd::Zero(unknowns);
+  for(int c = 0; c < 2; ++c)
+    for(std::size_t i = 0; i < n; ++i)
+      if(system.unknown[c][cluster[c][i]] >= 0)
+      {
+        x[system.unknown[c][cluster[c][i]]] += start[i][c];
+        members[system.unknown[c][cluster[c][i]]] += 1;
+      }
+  x = x.cwiseQuotient(members);
+  if(!proximal_steps([&](const Eigen::VectorXd& at) { return factored.cholesky.solve(system.rhs + system.eps * at); }, x))
+    return false;
   uv.resize(n);
   for(int c = 0; c < 2; ++c)
     for(std::size_t i = 0; i < n; ++i)
     {
       const std::size_t r = cluster[c][i];
-      uv[i][c] = unknown[c][r] < 0 ? value[c][r] : x[unknown[c][r]];
+      uv[i][c] = system.unknown[c][r] < 0 ? system.value[c][r] : x[system.unknown[c][r]];
+    }
+  return true;
+}
+
+// The solution on `clusters` nearest to `start`, written to `uv`, solved on the factorization of
+// other clusters bordered by their differences: per coordinate, each base cluster is cut into
+// pieces by the new clusters; the piece holding its fixed vertex (or else its lowest vertex)
+// keeps the base unknown, every other piece gets an offset from it, and the pieces of a new
+// cluster are tied by equality constraints (to its fixed value, if it has one). The border,
+// offsets and constraints, is solved by its Schur complement, one solve of the factor for each
+// of its columns. False if the border would have more than `max_border` columns, or a solve
+// is not finite (doc/performance.md, change 17).
+inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                           const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
+                           const Active_set_factorization& factored, const Active_set_clusters& clusters,
+                           const UV_vector& start, std::size_t max_border, UV_vector& uv)
+{
+  const std::size_t n = geometry.points.size(), m = geometry.edges.size();
+  const Active_set_clusters& base = factored.clusters;
+  const Active_set_system& system = factored.system;
+  const Eigen::Index unknowns = system.normal.rows();
+  typedef std::pair<std::size_t, std::size_t> Piece; // (base root, new root)
+  struct Tie { int c; Piece piece, other; bool to_value; double value; }; // piece = other, or = value
+  std::array<std::vector<Eigen::Index>, 2> offset_of; // per vertex: its piece's offset column, or -1
+  std::array<std::vector<std::size_t>, 2> anchor;     // per base root: the vertex whose piece keeps its unknown
+  std::array<std::vector<double>, 2> fixed_value;     // per new root: its fixed value, or NaN
+  std::array<std::map<Piece, Eigen::Index>, 2> offset; // per piece off its base unknown: its column
+  std::vector<Tie> ties;
+  Eigen::Index offsets = 0;
+  for(int c = 0; c < 2; ++c)
+  {
+    anchor[c].resize(n);
+    std::iota(anchor[c].begin(), anchor[c].end(), std::size_t(0));
+    fixed_value[c].assign(n, std::numeric_limits<double>::quiet_NaN());
+    for(const Fixed_vertex& f : fixed)
+    {
+      anchor[c][base[c][f.index]] = f.index;
+      double& value = fixed_value[c][clusters[c][f.index]];
+      if(!std::isnan(value) && value != f.target[c])
+        return false; // infeasible: left to the factorization to say
+      value = f.target[c];
+    }
+    offset_of[c].assign(n, -1);
+    std::set<Piece> tied;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t b = base[c][i], r = clusters[c][i];
+      const bool kept = clusters[c][anchor[c][b]] == r;
+      const Piece piece(b, r);
+      if(!kept)
+      {
+        const auto added = offset[c].emplace(piece, unknowns + offsets);
+        offsets += added.second ? 1 : 0;
+        offset_of[c][i] = added.first->second;
+      }
+      const bool constant = kept && system.unknown[c][b] < 0, to_value = !std::isnan(fixed_value[c][r]);
+      if(constant && to_value && system.value[c][b] != fixed_value[c][r])
+        return false;
+      if((to_value ? !constant : b != base[c][r]) && tied.insert(piece).second)
+        ties.push_back(Tie{c, piece, Piece(base[c][r], r), to_value, fixed_value[c][r]});
+      if(std::size_t(offsets) + ties.size() > max_border)
+        return false;
+    }
+  }
+  if(offsets == 0 && ties.empty())
+    return false;
+
+  // The border: U couples the base unknowns to the offsets and the ties' multipliers, X holds
+  // the offsets' normal equations and the ties' rows among them; b1 their right-hand side.
+  const Eigen::Index p = offsets + Eigen::Index(ties.size());
+  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(unknowns, p), X = Eigen::MatrixXd::Zero(p, p);
+  Eigen::VectorXd b1 = Eigen::VectorXd::Zero(p);
+  auto column_of = [&](int c, std::size_t b) { return Eigen::Index(system.unknown[c][b]); }; // -1 if fixed
+  for(std::size_t e = 0; e < m; ++e)
+  {
+    const std::array<std::size_t, 2>& ends = geometry.edges[e];
+    if(offset_of[0][ends[0]] < 0 && offset_of[0][ends[1]] < 0 && offset_of[1][ends[0]] < 0 && offset_of[1][ends[1]] < 0)
+      continue;
+    std::array<Eigen::Index, 8> index;
+    std::array<double, 8> coefficient;
+    int count = 0;
+    double d = lengths[e];
+    for(int c = 0; c < 2; ++c)
+      for(int end = 0; end < 2; ++end)
+      {
+        const std::size_t i = ends[std::size_t(end)], b = base[c][i];
+        const double a = end == 0 ? signs[e][c] : -signs[e][c];
+        if(column_of(c, b) < 0)
+          d -= a * system.value[c][b];
+        else
+        {
+          index[std::size_t(count)] = column_of(c, b);
+          coefficient[std::size_t(count++)] = a;
+        }
+        if(offset_of[c][i] >= 0)
+        {
+          index[std::size_t(count)] = offset_of[c][i];
+          coefficient[std::size_t(count++)] = a;
+        }
+      }
+    for(int s = 0; s < count; ++s)
+    {
+      const Eigen::Index row = index[std::size_t(s)] - unknowns;
+      if(row < 0)
+        continue;
+      b1[row] += coefficient[std::size_t(s)] * d;
+      for(int t = 0; t < count; ++t)
+      {
+        const double product = coefficient[std::size_t(s)] * coefficient[std::size_t(t)];
+        if(index[std::size_t(t)] < unknowns)
+          U(index[std::size_t(t)], row) += product;
+        else
+          X(index[std::size_t(t)] - unknowns, row) += product;
+      }
+    }
+  }
+  for(Eigen::Index k = 0; k < offsets; ++k)
+    X(k, k) += system.eps;
+  // A tie's row: the value of its piece minus the other's, or minus its fixed value.
+  auto add_piece = [&](int c, const Piece& piece, double sign, Eigen::Index row) {
+    const std::size_t b = piece.first;
+    if(column_of(c, b) < 0)
+      b1[row] -= sign * system.value[c][b];
+    else
+      U(column_of(c, b), row) += sign;
+    if(clusters[c][anchor[c][b]] != piece.second)
+      X(offset[c].at(piece) - unknowns, row) += sign;
+  };
+  for(std::size_t t = 0; t < ties.size(); ++t)
+  {
+    const Eigen::Index row = offsets + Eigen::Index(t);
+    add_piece(ties[t].c, ties[t].piece, 1., row);
+    if(ties[t].to_value)
+      b1[row] += ties[t].value;
+    else
+      add_piece(ties[t].c, ties[t].other, -1., row);
+    X.row(row) = X.col(row).transpose();
+  }
+
+  // Schur complement S = X - U' K^-1 U; a step solves K y = b0, S t = b1 - U' y, x = y - K^-1 U t.
+  const Eigen::MatrixXd G = factored.cholesky.solve_columns(U);
+  if(!G.allFinite())
+    return false;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> schur(X - U.transpose() * G);
+  const Eigen::Index size = unknowns + offsets;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(size), members = Eigen::VectorXd::Zero(size);
+  for(int c = 0; c < 2; ++c)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const Eigen::Index k = column_of(c, base[c][i]);
+      if(k >= 0)
+      {
+        x[k] += start[i][c];
+        members[k] += 1;
+      }
+    }
+  for(Eigen::Index k = 0; k < unknowns; ++k)
+    x[k] /= members[k];
+  for(int c = 0; c < 2; ++c)
+    for(std::size_t i = 0; i < n; ++i)
+      if(offset_of[c][i] >= 0)
+      {
+        const std::size_t b = base[c][i];
+        const Eigen::Index k = offset_of[c][i];
+        x[k] += start[i][c] - (column_of(c, b) < 0 ? system.value[c][b] : x[column_of(c, b)]);
+        members[k] += 1;
+      }
+  for(Eigen::Index k = unknowns; k < size; ++k)
+    x[k] /= members[k];
+  const bool solved = proximal_steps(
+    [&](const Eigen::VectorXd& at) {
+      const Eigen::VectorXd y = factored.cholesky.solve(Eigen::VectorXd(system.rhs + system.eps * at.head(unknowns)));
+      Eigen::VectorXd rhs = b1;
+      rhs.head(offsets) += system.eps * at.tail(offsets);
+      const Eigen::VectorXd t = schur.solve(Eigen::VectorXd(rhs - U.transpose() * y));
+      Eigen::VectorXd next(size);
+      next.head(unknowns) = y - G * t;
+      next.tail(offsets) = t.head(offsets);
+      return next;
+    },
+    x);
+  if(!solved)
+    return false;
+  // Every vertex takes the value of its new cluster's root (or the cluster's fixed value).
+  uv.resize(n);
+  for(int c = 0; c < 2; ++c)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t r = clusters[c][i], b = base[c][r];
+      const double value = column_of(c, b) < 0 ? system.value[c][b] : x[column_of(c, b)];
+      uv[i][c] = !std::isnan(fixed_value[c][r]) ? fixed_value[c][r]
+                                                 : value + (offset_of[c][r] >= 0 ? x[offset_of[c][r]] : 0.);
     }
   return true;
 }
@@ -278,25 +517,31 @@ inline bool solve_on_clusters(const Norm_preserving_geometry& geometry, const st
 // The solution of Eq. 5 with the constraints of `active` as equalities nearest to `start`,
 // written to `uv`, and its multipliers to `y` (per edge, for a and b), those of the active
 // edges off the spanning trees taken from `estimate`; false if the active set ties the two
-// fixed vertices to different values. `clusters` holds those of the active set `start` is the
-// solution on (or nothing) and receives those of `active`: when they are the same (the
-// constraints that left the active set were on cycles of active edges, those that joined it
-// tied vertices already tied), `start` is the solution on `active` too, and nothing is factored
-// (doc/performance.md, change 16). `order` as for active_set_system().
+// fixed vertices to different values. `rounds` holds what the round `start` comes from left
+// (or nothing) and receives this round's: when the active set ties the clusters of the round
+// before (the constraints that left it were on cycles of active edges, those that joined it
+// tied vertices already tied), `start` is the solution on `active` too, and nothing is solved
+// (doc/performance.md, change 16); when its clusters differ from those of the last
+// factorization in at most `polish_border` splits and joins, they are solved bordered on it
+// (change 17); else factored anew. `order` as for active_set_system().
 inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                                 const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
                                 const std::vector<std::size_t>& order, const Active_set& active, const UV_vector& start,
-                                Active_set_clusters& clusters, const std::vector<std::array<double, 2> >& estimate,
+                                Active_set_rounds& rounds, const std::vector<std::array<double, 2> >& estimate,
                                 UV_vector& uv, std::vector<std::array<double, 2> >& y)
 {
   const std::size_t n = geometry.points.size(), m = geometry.edges.size();
   Active_set_clusters tied = active_set_clusters(geometry, active);
-  if(tied == clusters)
+  if(tied == rounds.clusters)
     uv = start;
   else
   {
-    clusters.swap(tied);
-    if(!solve_on_clusters(geometry, lengths, signs, fixed, order, clusters, start, uv))
+    rounds.clusters.swap(tied);
+    const bool bordered = !rounds.factored.clusters[0].empty() &&
+                          solve_bordered(geometry, lengths, signs, fixed, rounds.factored, rounds.clusters, start,
+                                         polish_border, uv);
+    if(!bordered && !(factor_active_set(geometry, lengths, signs, fixed, order, rounds.clusters, rounds.factored) &&
+                      solve_factored(rounds.factored, start, uv)))
       return false;
   }
 

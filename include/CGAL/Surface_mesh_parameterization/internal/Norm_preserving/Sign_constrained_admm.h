@@ -271,14 +271,14 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     std::vector<std::array<double, 2> > y;
     const std::vector<std::array<double, 2> > estimate = multipliers();
     const std::vector<std::size_t> order = elimination_order(free_index, cholesky.positions());
-    Active_set_clusters clusters; // those of the last round's active set
+    Active_set_rounds rounds; // what the last round leaves to the next
     std::vector<std::pair<double, std::size_t> > wrong; // (minus how wrong, 2 e + c)
     std::size_t wanted = 0, fewest = std::numeric_limits<std::size_t>::max(),
                 limit = std::numeric_limits<std::size_t>::max(); // turns a round
     for(int round = 0; round < polish_rounds; ++round)
     {
       const UV_vector start = round == 0 ? uv : candidate; // the last ADMM iterate, then the last candidate
-      if(!solve_on_active_set(geometry, lengths, signs, fixed, order, active, start, clusters, estimate, candidate, y))
+      if(!solve_on_active_set(geometry, lengths, signs, fixed, order, active, start, rounds, estimate, candidate, y))
         return false;
       UV_vector projected = candidate;
       projection.apply(projected);
