@@ -578,11 +578,12 @@ TEST(ActiveSetPolish, KeepsTheSolutionWhenTheClustersStay)
 // (here: active constraints left that split clusters, inactive edges joined between clusters,
 // one of them the fixed vertex's) is solved on that factorization, bordered: the objective of a
 // new factorization within 1e-12, every cluster at one value, the fixed vertices at theirs.
-// Many more changes than `polish_border` are factored anew, bit for bit as from scratch.
+// Many more changes than `polish_border` are factored anew, bit for bit as from scratch. On
+// Eigen's LDL' factor (cow, mushroom) and on CHOLMOD's (armadillo, when configured with it).
 TEST(ActiveSetPolish, SolvesAFewChangesOnTheLastFactorization)
 {
   namespace NP = SMP::internal::Norm_preserving;
-  for(const std::string name : {"cow", "mushroom"})
+  for(const std::string name : {"cow", "mushroom", "armadillo"})
   {
     const Admm_stop stop(np_test::load_mesh(name));
     const std::size_t n = stop.geometry.points.size(), m = stop.geometry.edges.size();
@@ -591,6 +592,10 @@ TEST(ActiveSetPolish, SolvesAFewChangesOnTheLastFactorization)
     ASSERT_TRUE(first.solve(stop.active, stop.uv, rounds)) << name;
     const NP::Active_set_clusters base = rounds.clusters;
     ASSERT_EQ(rounds.factored.clusters, base) << name;
+    if(name == "armadillo") // CHOLMOD's factor (when configured with it)
+    {
+      EXPECT_GE(std::size_t(rounds.factored.system.normal.rows()), NP::cholmod_minimum_rows);
+    }
 
     // Changes of the active set, each splitting or joining clusters of `base`.
     std::vector<std::size_t> splits, joins, fixed_joins; // 2 e + c

@@ -50,8 +50,9 @@ namespace Norm_preserving {
 using Active_set = std::vector<std::array<char, 2> >; // per edge and coordinate: at equality
 
 // A round whose clusters differ from those of the last factorization by at most this many
-// splits and joins is solved on it, bordered (doc/performance.md, change 17).
-constexpr std::size_t polish_border = 16;
+// splits and joins is solved on it, bordered: more on Eigen's LDL' factor, whose border
+// columns are solved sparse, than on CHOLMOD's (doc/performance.md, changes 17 and 18).
+constexpr std::size_t polish_border = 64, polish_border_supernodal = 16;
 
 // The vertices in the order the factor of the free-vertex Laplacian eliminates them
 // (`positions`, per free index), the fixed ones last. The polish numbers its unknowns in this
@@ -93,12 +94,17 @@ public:
     return m_ldlt.info() == Eigen::Success && (m_ldlt.vectorD().array() > 0).all();
   }
 
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return solve_dense(b); }
-  Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& b) const { return solve_dense(b); }
+  // The most splits and joins solved bordered on this factor (polish_border).
+  std::size_t border_limit() const
+  {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    if(m_large)
+      return polish_border_supernodal;
+#endif
+    return polish_border;
+  }
 
-private:
-  template <typename Dense>
-  Dense solve_dense(const Dense& b) const
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const
   {
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
     if(m_large)
@@ -107,6 +113,105 @@ private:
     return m_ldlt.solve(b);
   }
 
+  // Solves with the factored matrix K bordered by sparse columns U, for the Schur complement
+  // of [K U; U' X]: complement() = U' K^-1 U; per right-hand side b0, project(b0) = U' K^-1 b0,
+  // then solve(t) = K^-1 (b0 - U t), one solve of K in all. On the LDL' factor the columns are
+  // kept as L^-1 U on the rows it reaches (the ancestors of U's rows in the elimination tree),
+  // all columns at once; on CHOLMOD's as K^-1 U.
+  class Border
+  {
+  public:
+    Border(const Regularized_normal_cholesky& cholesky, const Sparse_matrix& columns)
+      : m_cholesky(cholesky), m_columns(columns)
+    {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+      if(cholesky.m_large)
+      {
+        m_solved = cholesky.m_cholmod.solve(Eigen::MatrixXd(columns));
+        m_complement = columns.transpose() * m_solved;
+        return;
+      }
+#endif
+      // The reach: from each row of U up the elimination tree (a column's first entry below the
+      // diagonal is its parent), numbered in elimination order.
+      const Sparse_matrix& lower = cholesky.m_ldlt.matrixL().nestedExpression(); // strictly lower
+      m_row.assign(std::size_t(lower.rows()), -1);
+      for(Eigen::Index k = 0; k < columns.outerSize(); ++k)
+        for(Sparse_matrix::InnerIterator entry(columns, k); entry; ++entry)
+          for(Eigen::Index j = entry.index(); j >= 0 && m_row[std::size_t(j)] < 0;)
+          {
+            m_row[std::size_t(j)] = 0;
+            const Sparse_matrix::InnerIterator parent(lower, j);
+            j = parent ? parent.index() : -1;
+          }
+      for(std::size_t j = 0; j < m_row.size(); ++j)
+        if(m_row[j] >= 0)
+        {
+          m_row[j] = Eigen::Index(m_reach.size());
+          m_reach.push_back(Eigen::Index(j));
+        }
+      m_forward = Row_matrix::Zero(Eigen::Index(m_reach.size()), columns.cols());
+      for(Eigen::Index k = 0; k < columns.outerSize(); ++k)
+        for(Sparse_matrix::InnerIterator entry(columns, k); entry; ++entry)
+          m_forward(m_row[std::size_t(entry.index())], k) += entry.value();
+      for(std::size_t r = 0; r < m_reach.size(); ++r)
+        for(Sparse_matrix::InnerIterator entry(lower, m_reach[r]); entry; ++entry)
+          m_forward.row(m_row[std::size_t(entry.index())]).noalias() -= entry.value() * m_forward.row(Eigen::Index(r));
+      m_inverse_d.resize(Eigen::Index(m_reach.size()));
+      for(std::size_t r = 0; r < m_reach.size(); ++r)
+        m_inverse_d[Eigen::Index(r)] = 1. / cholesky.m_ldlt.vectorD()[m_reach[r]];
+      m_complement = m_forward.transpose() * (m_inverse_d.asDiagonal() * m_forward);
+    }
+
+    const Eigen::MatrixXd& complement() const { return m_complement; }
+
+    Eigen::VectorXd project(const Eigen::VectorXd& b0)
+    {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+      if(m_cholesky.m_large)
+      {
+        m_half = m_cholesky.m_cholmod.solve(b0);
+        return m_columns.transpose() * m_half;
+      }
+#endif
+      m_half = b0;
+      m_cholesky.m_ldlt.matrixL().solveInPlace(m_half);
+      Eigen::VectorXd reached(m_inverse_d.size());
+      for(std::size_t r = 0; r < m_reach.size(); ++r)
+        reached[Eigen::Index(r)] = m_inverse_d[Eigen::Index(r)] * m_half[m_reach[r]];
+      return m_forward.transpose() * reached;
+    }
+
+    Eigen::VectorXd solve(const Eigen::VectorXd& t) const
+    {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+      if(m_cholesky.m_large)
+        return m_half - m_solved * t;
+#endif
+      Eigen::VectorXd x = m_half;
+      const Eigen::VectorXd correction = m_forward * t;
+      for(std::size_t r = 0; r < m_reach.size(); ++r)
+        x[m_reach[r]] -= correction[Eigen::Index(r)];
+      x = x.cwiseQuotient(m_cholesky.m_ldlt.vectorD());
+      m_cholesky.m_ldlt.matrixU().solveInPlace(x);
+      return x;
+    }
+
+  private:
+    typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
+
+    const Regularized_normal_cholesky& m_cholesky;
+    const Sparse_matrix& m_columns;
+    std::vector<Eigen::Index> m_row;   // per unknown: its row of m_forward, -1 if not reached
+    std::vector<Eigen::Index> m_reach; // per row of m_forward: its unknown
+    Row_matrix m_forward;              // L^-1 U on the reached rows
+    Eigen::VectorXd m_inverse_d;       // D^-1 on the reached rows
+    Eigen::MatrixXd m_solved;          // K^-1 U
+    Eigen::MatrixXd m_complement;      // U' K^-1 U
+    Eigen::VectorXd m_half;            // L^-1 b0, or K^-1 b0
+  };
+
+private:
   Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower, Eigen::NaturalOrdering<int> > m_ldlt;
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
   Sparse_cholesky m_cholmod;
@@ -327,9 +432,9 @@ inline bool solve_factored(const Active_set_factorization& factored, const UV_ve
 // pieces by the new clusters; the piece holding its fixed vertex (or else its lowest vertex)
 // keeps the base unknown, every other piece gets an offset from it, and the pieces of a new
 // cluster are tied by equality constraints (to its fixed value, if it has one). The border,
-// offsets and constraints, is solved by its Schur complement, one solve of the factor for each
-// of its columns. False if the border would have more than `max_border` columns, or a solve
-// is not finite (doc/performance.md, change 17).
+// offsets and constraints, is solved by its Schur complement (Regularized_normal_cholesky::
+// Border). False if the border would have more than `max_border` columns, or a solve is not
+// finite (doc/performance.md, changes 17 and 18).
 inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                            const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
                            const Active_set_factorization& factored, const Active_set_clusters& clusters,
@@ -388,7 +493,8 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
   // The border: U couples the base unknowns to the offsets and the ties' multipliers, X holds
   // the offsets' normal equations and the ties' rows among them; b1 their right-hand side.
   const Eigen::Index p = offsets + Eigen::Index(ties.size());
-  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(unknowns, p), X = Eigen::MatrixXd::Zero(p, p);
+  std::vector<Eigen::Triplet<double> > border;
+  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(p, p);
   Eigen::VectorXd b1 = Eigen::VectorXd::Zero(p);
   auto column_of = [&](int c, std::size_t b) { return Eigen::Index(system.unknown[c][b]); }; // -1 if fixed
   for(std::size_t e = 0; e < m; ++e)
@@ -428,7 +534,7 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
       {
         const double product = coefficient[std::size_t(s)] * coefficient[std::size_t(t)];
         if(index[std::size_t(t)] < unknowns)
-          U(index[std::size_t(t)], row) += product;
+          border.emplace_back(index[std::size_t(t)], row, product);
         else
           X(index[std::size_t(t)] - unknowns, row) += product;
       }
@@ -442,7 +548,7 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
     if(column_of(c, b) < 0)
       b1[row] -= sign * system.value[c][b];
     else
-      U(column_of(c, b), row) += sign;
+      border.emplace_back(column_of(c, b), row, sign);
     if(clusters[c][anchor[c][b]] != piece.second)
       X(offset[c].at(piece) - unknowns, row) += sign;
   };
@@ -457,11 +563,13 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
     X.row(row) = X.col(row).transpose();
   }
 
-  // Schur complement S = X - U' K^-1 U; a step solves K y = b0, S t = b1 - U' y, x = y - K^-1 U t.
-  const Eigen::MatrixXd G = factored.cholesky.solve_columns(U);
-  if(!G.allFinite())
+  // Schur complement S = X - U' K^-1 U; a step solves S t = b1 - U' K^-1 b0, x = K^-1 (b0 - U t).
+  Sparse_matrix U(unknowns, p);
+  U.setFromTriplets(border.begin(), border.end());
+  Regularized_normal_cholesky::Border bordered(factored.cholesky, U);
+  if(!bordered.complement().allFinite())
     return false;
-  const Eigen::PartialPivLU<Eigen::MatrixXd> schur(X - U.transpose() * G);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> schur(X - bordered.complement());
   const Eigen::Index size = unknowns + offsets;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(size), members = Eigen::VectorXd::Zero(size);
   for(int c = 0; c < 2; ++c)
@@ -489,12 +597,12 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
     x[k] /= members[k];
   const bool solved = proximal_steps(
     [&](const Eigen::VectorXd& at) {
-      const Eigen::VectorXd y = factored.cholesky.solve(Eigen::VectorXd(system.rhs + system.eps * at.head(unknowns)));
       Eigen::VectorXd rhs = b1;
       rhs.head(offsets) += system.eps * at.tail(offsets);
-      const Eigen::VectorXd t = schur.solve(Eigen::VectorXd(rhs - U.transpose() * y));
+      rhs -= bordered.project(system.rhs + system.eps * at.head(unknowns));
+      const Eigen::VectorXd t = schur.solve(rhs);
       Eigen::VectorXd next(size);
-      next.head(unknowns) = y - G * t;
+      next.head(unknowns) = bordered.solve(t);
       next.tail(offsets) = t.head(offsets);
       return next;
     },
@@ -522,8 +630,8 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
 // before (the constraints that left it were on cycles of active edges, those that joined it
 // tied vertices already tied), `start` is the solution on `active` too, and nothing is solved
 // (doc/performance.md, change 16); when its clusters differ from those of the last
-// factorization in at most `polish_border` splits and joins, they are solved bordered on it
-// (change 17); else factored anew. `order` as for active_set_system().
+// factorization in at most its border_limit() splits and joins, they are solved bordered on it
+// (changes 17 and 18); else factored anew. `order` as for active_set_system().
 inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                                 const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
                                 const std::vector<std::size_t>& order, const Active_set& active, const UV_vector& start,
@@ -539,7 +647,7 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
     rounds.clusters.swap(tied);
     const bool bordered = !rounds.factored.clusters[0].empty() &&
                           solve_bordered(geometry, lengths, signs, fixed, rounds.factored, rounds.clusters, start,
-                                         polish_border, uv);
+                                         rounds.factored.cholesky.border_limit(), uv);
     if(!bordered && !(factor_active_set(geometry, lengths, signs, fixed, order, rounds.clusters, rounds.factored) &&
                       solve_factored(rounds.factored, start, uv)))
       return false;

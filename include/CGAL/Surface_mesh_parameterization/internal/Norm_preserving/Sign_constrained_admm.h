@@ -74,7 +74,8 @@ constexpr double admm_default_tolerance = 2.5e-5; // of Norm_preserving_ADMM_sol
 // length), and corrects the active set at most `polish_rounds` times a try. When a round
 // wants more than `polish_shrink` times the turns the round before wanted, the turns a round
 // are limited to half of those, the most wrong first; a try ends when a round wants more than
-// `polish_growth_limit` times the fewest turns wanted so far (doc/performance.md, change 9).
+// `polish_growth_limit` times the fewest turns wanted so far plus `polish_growth_slack`
+// (doc/performance.md, changes 9 and 18).
 // The default mode tries the polish too, on a slow tail: from iteration
 // `polish_default_minimum`, or later on a mesh whose factorization costs more per entry of the
 // factor (a polish round factors a system of about twice the Laplacian's unknowns: about
@@ -85,7 +86,7 @@ constexpr double polish_default_factor = 5;
 constexpr double polish_turn_tolerance = 1e-9;
 constexpr int polish_rounds = 24;
 constexpr double polish_shrink = 0.7;
-constexpr std::size_t polish_growth_limit = 2;
+constexpr std::size_t polish_growth_limit = 2, polish_growth_slack = 16;
 
 struct Admm_settings
 {
@@ -309,7 +310,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
         }
       }
       fewest = (std::min)(fewest, wrong.size());
-      if(wrong.empty() || wrong.size() > polish_growth_limit * fewest)
+      if(wrong.empty() || wrong.size() > polish_growth_limit * fewest + polish_growth_slack)
         return false;
       if(round > 0 && double(wrong.size()) > polish_shrink * double(wanted))
         limit = (std::max)(std::size_t(1), (std::min)(limit, wanted / 2));
