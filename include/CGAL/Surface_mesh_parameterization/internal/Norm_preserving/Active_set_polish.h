@@ -51,7 +51,8 @@ using Active_set = std::vector<std::array<char, 2> >; // per edge and coordinate
 
 // A round whose clusters differ from those of the last factorization by at most this many
 // splits and joins is solved on it, bordered: more on Eigen's LDL' factor, whose border
-// columns are solved sparse, than on CHOLMOD's (doc/performance.md, changes 17 and 18).
+// columns are solved on their reach in the elimination tree, than on CHOLMOD's
+// (doc/performance.md, changes 17 and 18).
 constexpr std::size_t polish_border = 64, polish_border_supernodal = 16;
 
 // The vertices in the order the factor of the free-vertex Laplacian eliminates them
@@ -135,28 +136,28 @@ public:
       // The reach: from each row of U up the elimination tree (a column's first entry below the
       // diagonal is its parent), numbered in elimination order.
       const Sparse_matrix& lower = cholesky.m_ldlt.matrixL().nestedExpression(); // strictly lower
-      m_row.assign(std::size_t(lower.rows()), -1);
+      std::vector<Eigen::Index> row(std::size_t(lower.rows()), -1); // per unknown: its row of m_forward
       for(Eigen::Index k = 0; k < columns.outerSize(); ++k)
         for(Sparse_matrix::InnerIterator entry(columns, k); entry; ++entry)
-          for(Eigen::Index j = entry.index(); j >= 0 && m_row[std::size_t(j)] < 0;)
+          for(Eigen::Index j = entry.index(); j >= 0 && row[std::size_t(j)] < 0;)
           {
-            m_row[std::size_t(j)] = 0;
+            row[std::size_t(j)] = 0;
             const Sparse_matrix::InnerIterator parent(lower, j);
             j = parent ? parent.index() : -1;
           }
-      for(std::size_t j = 0; j < m_row.size(); ++j)
-        if(m_row[j] >= 0)
+      for(std::size_t j = 0; j < row.size(); ++j)
+        if(row[j] >= 0)
         {
-          m_row[j] = Eigen::Index(m_reach.size());
+          row[j] = Eigen::Index(m_reach.size());
           m_reach.push_back(Eigen::Index(j));
         }
       m_forward = Row_matrix::Zero(Eigen::Index(m_reach.size()), columns.cols());
       for(Eigen::Index k = 0; k < columns.outerSize(); ++k)
         for(Sparse_matrix::InnerIterator entry(columns, k); entry; ++entry)
-          m_forward(m_row[std::size_t(entry.index())], k) += entry.value();
+          m_forward(row[std::size_t(entry.index())], k) += entry.value();
       for(std::size_t r = 0; r < m_reach.size(); ++r)
         for(Sparse_matrix::InnerIterator entry(lower, m_reach[r]); entry; ++entry)
-          m_forward.row(m_row[std::size_t(entry.index())]).noalias() -= entry.value() * m_forward.row(Eigen::Index(r));
+          m_forward.row(row[std::size_t(entry.index())]).noalias() -= entry.value() * m_forward.row(Eigen::Index(r));
       m_inverse_d.resize(Eigen::Index(m_reach.size()));
       for(std::size_t r = 0; r < m_reach.size(); ++r)
         m_inverse_d[Eigen::Index(r)] = 1. / cholesky.m_ldlt.vectorD()[m_reach[r]];
@@ -202,7 +203,6 @@ public:
 
     const Regularized_normal_cholesky& m_cholesky;
     const Sparse_matrix& m_columns;
-    std::vector<Eigen::Index> m_row;   // per unknown: its row of m_forward, -1 if not reached
     std::vector<Eigen::Index> m_reach; // per row of m_forward: its unknown
     Row_matrix m_forward;              // L^-1 U on the reached rows
     Eigen::VectorXd m_inverse_d;       // D^-1 on the reached rows
