@@ -383,10 +383,10 @@ inline bool factor_active_set(const Norm_preserving_geometry& geometry, const st
 
 // Proximal steps x <- argmin |d - C x|^2 + eps |x - x_prev|^2 from `x`: at most four, fewer
 // once a step moves x by at most `proximal_round_off` of its size. With eps 1e-9 of the mean
-// diagonal a solve's round-off is about 1e-7 of x, and the steps after the first measured
-// on the benchmark meshes moved x by that much each, along the directions of zero curvature,
-// without converging: they are not taken (doc/performance.md, change 19). `step` takes x_prev
-// and returns the next x. False if a step is not finite.
+// diagonal a solve's round-off is about 1e-7 of x: on the benchmark meshes every step after
+// the first moved x by about that much, along directions of zero curvature, without
+// converging, so the steps end after the second (doc/performance.md, change 19). `step` takes
+// x_prev and returns the next x. False if a step is not finite.
 constexpr double proximal_round_off = 1e-5;
 
 template <typename Step>
