@@ -50,10 +50,8 @@ namespace Norm_preserving {
 using Active_set = std::vector<std::array<char, 2> >; // per edge and coordinate: at equality
 
 // A round whose clusters differ from those of the last factorization by at most this many
-// splits and joins is solved on it, bordered: more on Eigen's LDL' factor, whose border
-// columns are solved on their reach in the elimination tree, than on CHOLMOD's
-// (doc/performance.md, changes 17 and 18).
-constexpr std::size_t polish_border = 64, polish_border_supernodal = 16;
+// splits and joins is solved on it, bordered (doc/performance.md, changes 17, 18 and 20).
+constexpr std::size_t polish_border = 64;
 
 // The vertices in the order the factor of the free-vertex Laplacian eliminates them
 // (`positions`, per free index), the fixed ones last. The polish numbers its unknowns in this
@@ -70,9 +68,10 @@ inline std::vector<std::size_t> elimination_order(const std::vector<int>& free_i
 }
 
 // The factorization of the polish's regularized normal equations, its unknowns already in a
-// fill-reducing order: Eigen's simplicial LDL', or from 25,000 unknowns CHOLMOD's supernodal
-// Cholesky when the package is configured with it (faster there; below, faster on some meshes
-// and slower on others: doc/performance.md, changes 7 and 13).
+// fill-reducing order: Eigen's simplicial L D L', or from 25,000 unknowns CHOLMOD's supernodal
+// L L' when the package is configured with it (faster there; below, faster on some meshes and
+// slower on others: doc/performance.md, changes 7 and 13), read in place by the border
+// (change 20).
 class Regularized_normal_cholesky
 {
 public:
@@ -82,27 +81,13 @@ public:
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
     m_large = std::size_t(lower.rows()) >= cholmod_minimum_rows;
     if(m_large)
-    {
-      cholmod_common& common = m_cholmod.cholmod();
-      common.print = 0;
-      common.nmethods = 1;
-      common.method[0].ordering = CHOLMOD_NATURAL;
-      m_cholmod.compute(lower);
-      return m_cholmod.info() == Eigen::Success;
-    }
+      return m_cholmod.compute(lower);
 #endif
     m_ldlt.compute(lower);
-    return m_ldlt.info() == Eigen::Success && (m_ldlt.vectorD().array() > 0).all();
-  }
-
-  // The most splits and joins solved bordered on this factor (polish_border).
-  std::size_t border_limit() const
-  {
-#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-    if(m_large)
-      return polish_border_supernodal;
-#endif
-    return polish_border;
+    if(m_ldlt.info() != Eigen::Success)
+      return false;
+    m_d = m_ldlt.vectorD(); // a copy: once, not per use
+    return (m_d.array() > 0).all();
   }
 
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const
@@ -116,35 +101,22 @@ public:
 
   // Solves with the factored matrix K bordered by sparse columns U, for the Schur complement
   // of [K U; U' X]: complement() = U' K^-1 U; per right-hand side b0, project(b0) = U' K^-1 b0,
-  // then solve(t) = K^-1 (b0 - U t), one solve of K in all. On the LDL' factor the columns are
-  // kept as L^-1 U on the rows it reaches (the ancestors of U's rows in the elimination tree),
-  // all columns at once; on CHOLMOD's as K^-1 U.
+  // then solve(t) = K^-1 (b0 - U t), one solve of K in all. The columns are kept as L^-1 U on
+  // the rows it reaches (the ancestors of U's rows in the elimination tree), all at once, on
+  // either factor (doc/performance.md, changes 18 and 20).
   class Border
   {
   public:
     Border(const Regularized_normal_cholesky& cholesky, const Sparse_matrix& columns)
-      : m_cholesky(cholesky), m_columns(columns)
+      : m_cholesky(cholesky)
     {
-#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-      if(cholesky.m_large)
-      {
-        m_solved = cholesky.m_cholmod.solve(Eigen::MatrixXd(columns));
-        m_complement = columns.transpose() * m_solved;
-        return;
-      }
-#endif
-      // The reach: from each row of U up the elimination tree (a column's first entry below the
-      // diagonal is its parent), numbered in elimination order.
-      const Sparse_matrix& lower = cholesky.m_ldlt.matrixL().nestedExpression(); // strictly lower
-      std::vector<Eigen::Index> row(std::size_t(lower.rows()), -1); // per unknown: its row of m_forward
+      // The reach: from each row of U up the elimination tree, numbered in elimination order.
+      std::vector<Eigen::Index> row(std::size_t(cholesky.rows()), -1); // per row of L: its row of m_forward
       for(Eigen::Index k = 0; k < columns.outerSize(); ++k)
         for(Sparse_matrix::InnerIterator entry(columns, k); entry; ++entry)
-          for(Eigen::Index j = entry.index(); j >= 0 && row[std::size_t(j)] < 0;)
-          {
+          for(Eigen::Index j = cholesky.position(entry.index()); j >= 0 && row[std::size_t(j)] < 0;
+              j = cholesky.parent(j))
             row[std::size_t(j)] = 0;
-            const Sparse_matrix::InnerIterator parent(lower, j);
-            j = parent ? parent.index() : -1;
-          }
       for(std::size_t j = 0; j < row.size(); ++j)
         if(row[j] >= 0)
         {
@@ -154,14 +126,18 @@ public:
       m_forward = Row_matrix::Zero(Eigen::Index(m_reach.size()), columns.cols());
       for(Eigen::Index k = 0; k < columns.outerSize(); ++k)
         for(Sparse_matrix::InnerIterator entry(columns, k); entry; ++entry)
-          m_forward(row[std::size_t(entry.index())], k) += entry.value();
-      for(std::size_t r = 0; r < m_reach.size(); ++r)
-        for(Sparse_matrix::InnerIterator entry(lower, m_reach[r]); entry; ++entry)
-          m_forward.row(row[std::size_t(entry.index())]).noalias() -= entry.value() * m_forward.row(Eigen::Index(r));
-      const Eigen::VectorXd d = cholesky.m_ldlt.vectorD(); // a copy: once, not per row
+          m_forward(row[std::size_t(cholesky.position(entry.index()))], k) += entry.value();
       m_inverse_d.resize(Eigen::Index(m_reach.size()));
       for(std::size_t r = 0; r < m_reach.size(); ++r)
-        m_inverse_d[Eigen::Index(r)] = 1. / d[m_reach[r]];
+      {
+        const Eigen::Index i = Eigen::Index(r);
+        m_inverse_d[i] = 1. / cholesky.for_each_below(m_reach[r], [&](double diagonal) {
+          if(diagonal != 1.)
+            m_forward.row(i) /= diagonal;
+        }, [&](Eigen::Index below, double value) {
+          m_forward.row(row[std::size_t(below)]).noalias() -= value * m_forward.row(i);
+        });
+      }
       m_complement = m_forward.transpose() * (m_inverse_d.asDiagonal() * m_forward);
     }
 
@@ -169,15 +145,7 @@ public:
 
     Eigen::VectorXd project(const Eigen::VectorXd& b0)
     {
-#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-      if(m_cholesky.m_large)
-      {
-        m_half = m_cholesky.m_cholmod.solve(b0);
-        return m_columns.transpose() * m_half;
-      }
-#endif
-      m_half = b0;
-      m_cholesky.m_ldlt.matrixL().solveInPlace(m_half);
+      m_half = m_cholesky.forward(b0);
       Eigen::VectorXd reached(m_inverse_d.size());
       for(std::size_t r = 0; r < m_reach.size(); ++r)
         reached[Eigen::Index(r)] = m_inverse_d[Eigen::Index(r)] * m_half[m_reach[r]];
@@ -186,36 +154,185 @@ public:
 
     Eigen::VectorXd solve(const Eigen::VectorXd& t) const
     {
-#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-      if(m_cholesky.m_large)
-        return m_half - m_solved * t;
-#endif
       Eigen::VectorXd x = m_half;
       const Eigen::VectorXd correction = m_forward * t;
       for(std::size_t r = 0; r < m_reach.size(); ++r)
         x[m_reach[r]] -= correction[Eigen::Index(r)];
-      x = x.cwiseQuotient(m_cholesky.m_ldlt.vectorD());
-      m_cholesky.m_ldlt.matrixU().solveInPlace(x);
-      return x;
+      return m_cholesky.backward(x);
     }
 
   private:
     typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
 
     const Regularized_normal_cholesky& m_cholesky;
-    const Sparse_matrix& m_columns;
-    std::vector<Eigen::Index> m_reach; // per row of m_forward: its unknown
+    std::vector<Eigen::Index> m_reach; // per row of m_forward: its row of L
     Row_matrix m_forward;              // L^-1 U on the reached rows
     Eigen::VectorXd m_inverse_d;       // D^-1 on the reached rows
-    Eigen::MatrixXd m_solved;          // K^-1 U
     Eigen::MatrixXd m_complement;      // U' K^-1 U
-    Eigen::VectorXd m_half;            // L^-1 b0, or K^-1 b0
+    Eigen::VectorXd m_half;            // L^-1 b0
   };
 
 private:
-  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower, Eigen::NaturalOrdering<int> > m_ldlt;
+  // K = P' L D L' P: Eigen's factor has P = I and a unit diagonal in L, CHOLMOD's D = I.
+
+  Eigen::Index rows() const
+  {
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-  Sparse_cholesky m_cholmod;
+    if(m_large)
+      return Eigen::Index(m_cholmod.factor().n);
+#endif
+    return m_ldlt.rows();
+  }
+
+  // The row of L (of P K P') of an unknown.
+  Eigen::Index position(Eigen::Index unknown) const
+  {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    if(m_large)
+      return m_cholmod.position(unknown);
+#endif
+    return unknown;
+  }
+
+  // The parent of column j in the elimination tree (the row of its first entry below the
+  // diagonal), or -1.
+  Eigen::Index parent(Eigen::Index j) const
+  {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    if(m_large)
+      return m_cholmod.parent(j);
+#endif
+    const Sparse_matrix::InnerIterator first(m_ldlt.matrixL().nestedExpression(), j);
+    return first ? first.index() : -1;
+  }
+
+  // Calls on_diagonal(L_jj), then below(i, L_ij) on the entries of column j below the
+  // diagonal; returns D_j.
+  template <typename On_diagonal, typename Below>
+  double for_each_below(Eigen::Index j, On_diagonal&& on_diagonal, Below&& below) const
+  {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    if(m_large)
+    {
+      m_cholmod.for_each_in_column(j, on_diagonal, below);
+      return 1.;
+    }
+#endif
+    on_diagonal(1.);
+    for(Sparse_matrix::InnerIterator entry(m_ldlt.matrixL().nestedExpression(), j); entry; ++entry)
+      below(entry.index(), entry.value());
+    return m_d[j];
+  }
+
+  // L^-1 P b.
+  Eigen::VectorXd forward(const Eigen::VectorXd& b) const
+  {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    if(m_large)
+      return m_cholmod.solve_system(CHOLMOD_L, m_cholmod.solve_system(CHOLMOD_P, b));
+#endif
+    Eigen::VectorXd x = b;
+    m_ldlt.matrixL().solveInPlace(x);
+    return x;
+  }
+
+  // P' L'^-1 D^-1 y.
+  Eigen::VectorXd backward(const Eigen::VectorXd& y) const
+  {
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+    if(m_large)
+      return m_cholmod.solve_system(CHOLMOD_Pt, m_cholmod.solve_system(CHOLMOD_Lt, y));
+#endif
+    Eigen::VectorXd x = y.cwiseQuotient(m_d);
+    m_ldlt.matrixU().solveInPlace(x);
+    return x;
+  }
+
+  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower, Eigen::NaturalOrdering<int> > m_ldlt;
+  Eigen::VectorXd m_d; // its D
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+  // CHOLMOD's supernodal factor, read in place: supernode s holds the columns super[s] to
+  // super[s + 1] - 1, each with the rows s[pi[s]] to s[pi[s + 1] - 1] (ascending, the
+  // supernode's own first: padding zeros included, the first row below the diagonal is the
+  // parent), its values by columns from x[px[s]].
+  class Supernodal : public Sparse_cholesky
+  {
+  public:
+    bool compute(const Sparse_matrix& lower)
+    {
+      cholmod_common& common = cholmod();
+      common.print = 0;
+      common.nmethods = 1;
+      common.method[0].ordering = CHOLMOD_NATURAL; // postordered
+      Sparse_cholesky::compute(lower);
+      if(info() != Eigen::Success || !factor().is_super)
+        return false;
+      const int* super = static_cast<const int*>(factor().super);
+      m_supernode.resize(factor().n);
+      for(std::size_t s = 0; s < factor().nsuper; ++s)
+        std::fill(m_supernode.begin() + super[s], m_supernode.begin() + super[s + 1], int(s));
+      const int* permutation = static_cast<const int*>(factor().Perm);
+      m_position.resize(factor().n);
+      for(std::size_t k = 0; k < factor().n; ++k)
+        m_position[std::size_t(permutation[k])] = int(k);
+      return true;
+    }
+
+    const cholmod_factor& factor() const { return *this->m_cholmodFactor; }
+
+    Eigen::Index position(Eigen::Index unknown) const { return m_position[std::size_t(unknown)]; }
+
+    Eigen::Index parent(Eigen::Index j) const
+    {
+      const Column c = column(j);
+      return c.below < c.end ? c.rows[c.below] : -1;
+    }
+
+    template <typename On_diagonal, typename Below>
+    void for_each_in_column(Eigen::Index j, On_diagonal& on_diagonal, Below& below) const
+    {
+      const Column c = column(j);
+      on_diagonal(c.values[c.below - 1]);
+      for(int r = c.below; r < c.end; ++r)
+        below(Eigen::Index(c.rows[r]), c.values[r]);
+    }
+
+    // Solves the system of CHOLMOD's code (CHOLMOD_L, CHOLMOD_P, ...) for b; NaN if it fails.
+    Eigen::VectorXd solve_system(int system, Eigen::VectorXd b) const
+    {
+      cholmod_common* common = &const_cast<Supernodal&>(*this).cholmod(); // Eigen's is mutable
+      cholmod_dense view = Eigen::viewAsCholmod(b);
+      cholmod_dense* x = cholmod_solve(system, this->m_cholmodFactor, &view, common);
+      if(x == nullptr)
+        return Eigen::VectorXd::Constant(b.size(), std::numeric_limits<double>::quiet_NaN());
+      b = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(x->x), b.size());
+      cholmod_free_dense(&x, common);
+      return b;
+    }
+
+  private:
+    struct Column
+    {
+      const int* rows;     // the supernode's rows
+      const double* values; // the column's values, aligned with `rows`
+      int below, end;      // the entries below the diagonal: [below, end)
+    };
+
+    Column column(Eigen::Index j) const
+    {
+      const cholmod_factor& L = factor();
+      const std::size_t s = std::size_t(m_supernode[std::size_t(j)]);
+      const int first = static_cast<const int*>(L.super)[s], begin = static_cast<const int*>(L.pi)[s],
+                height = static_cast<const int*>(L.pi)[s + 1] - begin, c = int(j) - first;
+      return {static_cast<const int*>(L.s) + begin,
+              static_cast<const double*>(L.x) + static_cast<const int*>(L.px)[s] + std::ptrdiff_t(c) * height, c + 1,
+              height};
+    }
+
+    std::vector<int> m_supernode, m_position; // per column its supernode; per unknown its row of L
+  };
+
+  Supernodal m_cholmod;
   bool m_large = false;
 #endif
 };
@@ -636,8 +753,8 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
 // before (the constraints that left it were on cycles of active edges, those that joined it
 // tied vertices already tied), `start` is the solution on `active` too, and nothing is solved
 // (doc/performance.md, change 16); when its clusters differ from those of the last
-// factorization in at most its border_limit() splits and joins, they are solved bordered on it
-// (changes 17 and 18); else factored anew. `order` as for active_set_system().
+// factorization in at most `polish_border` splits and joins, they are solved bordered on it
+// (changes 17, 18 and 20); else factored anew. `order` as for active_set_system().
 inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                                 const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
                                 const std::vector<std::size_t>& order, const Active_set& active, const UV_vector& start,
@@ -653,7 +770,7 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
     rounds.clusters.swap(tied);
     const bool bordered = !rounds.factored.clusters[0].empty() &&
                           solve_bordered(geometry, lengths, signs, fixed, rounds.factored, rounds.clusters, start,
-                                         rounds.factored.cholesky.border_limit(), uv);
+                                         polish_border, uv);
     if(!bordered && !(factor_active_set(geometry, lengths, signs, fixed, order, rounds.clusters, rounds.factored) &&
                       solve_factored(rounds.factored, start, uv)))
       return false;
