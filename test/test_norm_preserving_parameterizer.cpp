@@ -601,8 +601,8 @@ TEST(ActiveSetPolish, KeepsTheSolutionWhenTheClustersStay)
 // scratch. On Eigen's LDL' factor (cow, mushroom) and on CHOLMOD's (armadillo, when configured
 // with it). Each solution, factored or bordered on 5 changes, satisfies its normal equations to
 // 1e-12 of their right-hand side (the proximal steps stop only once a step no longer moves the
-// point); bordered on 48, to 1e-8 (measured up to 3.3e-9, mushroom: doc/performance.md,
-// change 20).
+// point); bordered on 48, to 1e-8 (measured up to 3.3e-9, mushroom: the Schur complement's
+// round-off, doc/performance.md, change 20).
 TEST(ActiveSetPolish, SolvesAFewChangesOnTheLastFactorization)
 {
   namespace NP = SMP::internal::Norm_preserving;
