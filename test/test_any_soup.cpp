@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -342,6 +343,24 @@ TEST(AnySoup, LoosePartsAreCountedAndMapped)
   EXPECT_EQ(t.report.isolated_vertices, 1u);
   EXPECT_EQ(t.report.point_components, 1u);
   EXPECT_EQ(t.report.repeated_corners, 5u); // one in face 0, one in face 1, one in the edge, two in the point
+}
+
+// The edge graph holds each edge of the triangles once, as {i, j} with i < j, in lexicographic
+// order: on soups whose faces repeat (reversed), turn, or add fins to shared edges, against a
+// set of the triangles' edges.
+TEST(AnySoup, TheEdgeGraphHoldsEachEdgeOnceInOrder)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  for(const Soup& soup : {duplicated(9), misoriented(9), fins(9)})
+  {
+    std::set<std::array<std::size_t, 2> > expected;
+    for(const std::vector<std::size_t>& t : soup.polygons)
+      for(std::size_t k = 0; k < 3; ++k)
+        expected.insert({(std::min)(t[k], t[(k + 1) % 3]), (std::max)(t[k], t[(k + 1) % 3])});
+    const NP::Soup_graph graph = NP::build_soup_graph(soup.points, soup.polygons, true);
+    const std::vector<std::array<std::size_t, 2> > sorted(expected.begin(), expected.end());
+    EXPECT_EQ(graph.edges, sorted);
+  }
 }
 
 TEST(AnySoup, AFixedPairThatIsNotAnEdgeFailsBeforeAnySolve)
