@@ -686,7 +686,8 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
     X.row(row) = X.col(row).transpose();
   }
 
-  // Schur complement S = X - U' K^-1 U; a step solves S t = b1 - U' K^-1 b0, x = K^-1 (b0 - U t).
+  // Schur complement S = X - U' K^-1 U: for residuals (r0, r1), a step's change solves
+  // S t = r1 - U' K^-1 r0 and x = K^-1 (r0 - U t).
   Sparse_matrix U(unknowns, p);
   U.setFromTriplets(border.begin(), border.end());
   Regularized_normal_cholesky::Border bordered(factored.cholesky, U);
@@ -725,7 +726,8 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
   const bool solved = proximal_steps(
     [&](const Eigen::VectorXd& at) {
       Eigen::VectorXd t(p);
-      t << at.tail(offsets), multipliers;
+      t.head(offsets) = at.tail(offsets);
+      t.tail(p - offsets) = multipliers;
       const Eigen::VectorXd base_values = at.head(unknowns);
       const Eigen::VectorXd r0 = system.rhs + system.eps * base_values -
                                  system.normal.selfadjointView<Eigen::Lower>() * base_values - U * t;
