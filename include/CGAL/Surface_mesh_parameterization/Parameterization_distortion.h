@@ -9,6 +9,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_DISTORTION_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Soup_graph.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -259,8 +260,7 @@ Parameterization_distortion measure_soup_distortion(const PointRange& points, co
           measured_edges.push_back({(std::min)(t[e], t[(e + 1) % 3]), (std::max)(t[e], t[(e + 1) % 3])});
       });
   }
-  std::sort(measured_edges.begin(), measured_edges.end());
-  measured_edges.erase(std::unique(measured_edges.begin(), measured_edges.end()), measured_edges.end());
+  NP::sort_unique_edges(points.size(), measured_edges);
   auto xyz = [&](std::size_t i) -> NP::Vec3 {
     return {CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())};
   };
