@@ -27,8 +27,8 @@
 // mode the solve goes on until that certificate itself is at most the tolerance: from the point
 // where the default rule would stop, the bound is computed every 25 iterations, and the exact
 // optimum on the active set ADMM has found (Active_set_polish.h, whose multipliers make the
-// bound tight) is tried then, and again each time the iteration count has doubled, three times
-// at most: each try corrects the active set up to 24 times (one factorization each), turning
+// bound tight) is tried then, and again each time the iteration count has grown by half, five
+// times at most (doc/performance.md, change 23): each try corrects the active set up to 24 times (one factorization each), turning
 // only constraints violated, or of negative multiplier, beyond round-off, and fewer at a time
 // once the corrections stop shrinking: it settles at the default's stopping point on 34 of the
 // 35 benchmark meshes of up to 50,000 vertices, and on cow x3 (doc/performance.md, changes 8
@@ -80,9 +80,12 @@ constexpr double admm_default_tolerance = 2.5e-5; // of Norm_preserving_ADMM_sol
 // `polish_default_minimum`, or later on a mesh whose factorization costs more per entry of the
 // factor (a polish round factors a system of about twice the Laplacian's unknowns: about
 // `polish_default_factor` times the factor's work per entry in iterations for the rounds of a
-// try), then each time the iteration count has doubled (doc/performance.md, change 15).
+// try), then each time the iteration count has doubled (doc/performance.md, change 15), three
+// times at most. The certified mode tries again each time the iteration count has grown by
+// half, five times at most (doc/performance.md, change 23).
 constexpr int polish_default_minimum = 150;
 constexpr double polish_default_factor = 5;
+constexpr int polish_default_tries = 3, polish_certified_tries = 5;
 constexpr double polish_turn_tolerance = 1e-9;
 constexpr int polish_rounds = 24;
 constexpr double polish_shrink = 0.7;
@@ -243,8 +246,10 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   Extrapolated_stop stop(settings.certified ? admm_default_tolerance : settings.tolerance, gap_floor * scale);
   bool settled = false;        // the certified mode: the rule has stopped once
   int certified_at = 0;        // the iteration of the last certificate
-  int next_polish = 0;         // the iteration of the next polish (the default mode's first:
-  int polishes_left = 3;       // a slow tail), and how many more may be tried
+  // The iteration of the next polish (the default mode's first: a slow tail), and how many more
+  // may be tried.
+  int next_polish = 0;
+  int polishes_left = settings.certified ? polish_certified_tries : polish_default_tries;
   if(!settings.certified)
   {
     const double first =
@@ -407,7 +412,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
       bool certified = result.gap <= settings.tolerance;
       if(!certified && k >= next_polish && polishes_left > 0)
       {
-        next_polish = 2 * k;
+        next_polish = k + k / 2;
         --polishes_left;
         certified = polish();
       }
