@@ -92,6 +92,35 @@ TEST(Distortion, AnAffineStretchMatchesTheHandComputedAnglesAreasAndStretch)
   EXPECT_NEAR(d.l2_stretch, std::sqrt(5. / 8) / s, 1e-12);
 }
 
+TEST(Distortion, DoesNotDependOnTheScaleOfTheMeshOrOfTheMap)
+{
+  // The stretch above, its 3D positions and its uvs scaled by factors whose squares (or their
+  // products) overflow or underflow a double.
+  auto measure = [](double xyz, double uv) {
+    Mapped m;
+    m.add(0, 0, 0, 0, 0); m.add(xyz, 0, 0, 2 * uv, 0); m.add(0, xyz, 0, 0, uv);
+    m.mesh.add_face(m.v[0], m.v[1], m.v[2]);
+    return m.measure();
+  };
+  const auto unit = measure(1, 1);
+  const double factors[][2] = {{1e-200, 1}, {1e200, 1}, {1, 1e-250}, {1, 1e250}, {1e-180, 1e-150}, {1e180, 1e160}, {1e-100, 1e-100}};
+  for(const auto& f : factors)
+  {
+    const auto d = measure(f[0], f[1]);
+    EXPECT_NEAR(d.scale / (unit.scale * f[0] / f[1]), 1, 1e-14);
+    EXPECT_NEAR(d.edge_length_error, unit.edge_length_error, 1e-14);
+    EXPECT_NEAR(d.l1_edge_length_error, unit.l1_edge_length_error, 1e-14);
+    EXPECT_NEAR(d.mean_angle_distortion, unit.mean_angle_distortion, 1e-12);
+    EXPECT_NEAR(d.max_angle_distortion, unit.max_angle_distortion, 1e-12);
+    EXPECT_NEAR(d.area_distortion, unit.area_distortion, 1e-12);
+    EXPECT_NEAR(d.l2_stretch, unit.l2_stretch, 1e-12);
+    EXPECT_NEAR(d.linf_stretch, unit.linf_stretch, 1e-12);
+    EXPECT_EQ(d.degenerate_uv_faces, 0u);
+  }
+  // Eq. 3 is in squared 3D units.
+  EXPECT_NEAR(measure(1e-100, 1e-100).l1_objective / (unit.l1_objective * 1e-200), 1, 1e-14);
+}
+
 TEST(Distortion, CountsAFlippedFaceAndItsArea)
 {
   Mapped m; // faces of 3D areas 1/2 and 1, oriented oppositely in uv: the smaller one is flipped

@@ -33,7 +33,8 @@ namespace Surface_mesh_parameterization {
 /// Distortion of a uv map of a triangle mesh, over the faces and edges whose vertices all have
 /// a uv. Every measure but the flip counts is taken after scaling the uv map by the one factor
 /// that best fits the 3D edge lengths (least squares; the L1 measures use the factor that best
-/// fits the L1 lengths), so that it does not depend on the scale of the map.
+/// fits the L1 lengths), so that it does not depend on the scale of the map; nor, within the
+/// range of a double, on the scale of the mesh or of the map.
 struct Parameterization_distortion
 {
   std::size_t faces = 0;               ///< faces measured
@@ -90,6 +91,24 @@ struct Scale_fit
 namespace internal {
 namespace Norm_preserving {
 
+// The largest coordinate difference along `edges` of the positions `position(v)`, or 1 if that
+// is zero or not finite: the unit in which the measures are taken, so that their squares and
+// products neither overflow nor underflow at any scale of the input.
+template <typename Vertex, typename Position>
+double measure_unit(const std::vector<std::array<Vertex, 2> >& edges, Position position)
+{
+  double unit = 0;
+  for(const auto& e : edges)
+  {
+    const Vec3 p = minus(position(e[0]), position(e[1]));
+    for(double x : p)
+      unit = (std::max)(unit, std::abs(x));
+  }
+  return unit > 0 && std::isfinite(unit) ? unit : 1.;
+}
+
+inline Vec3 divided(const Vec3& a, double unit) { return {a[0] / unit, a[1] / unit, a[2] / unit}; }
+
 // The measures over `edges` and `triangles` (arrays of vertex handles, all with a uv), with
 // `xyz(v)` and `uv(v)` the 3D and uv positions as `Vec3`.
 template <typename Vertex, typename Xyz, typename Uv>
@@ -98,31 +117,32 @@ Parameterization_distortion measure_distortion(const std::vector<std::array<Vert
                                                Xyz xyz, Uv uv)
 {
   Parameterization_distortion d;
+  const double unit = measure_unit(edges, xyz), uv_unit = measure_unit(edges, uv);
   Scale_fit l2_fit, l1_fit;
   for(const auto& e : edges)
   {
     const auto i = e[0], j = e[1];
-    const Vec3 p = minus(xyz(i), xyz(j)), t = minus(uv(i), uv(j));
+    const Vec3 p = divided(minus(xyz(i), xyz(j)), unit), t = divided(minus(uv(i), uv(j)), uv_unit);
     l2_fit.add(std::sqrt(dot(p, p)), std::sqrt(dot(t, t)));
     l1_fit.add(std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]), std::abs(t[0]) + std::abs(t[1]));
   }
   d.edges = l2_fit.count;
-  d.scale = l2_fit.scale();
+  d.scale = l2_fit.scale() * (unit / uv_unit);
   d.edge_length_error = l2_fit.relative_rms();
   d.l1_edge_length_error = l1_fit.relative_rms();
-  d.l1_objective = l1_fit.sum_of_squares();
+  d.l1_objective = l1_fit.sum_of_squares() * unit * unit;
 
-  const double s = d.scale;
+  const double s = l2_fit.scale(); // from uv in units of `uv_unit` to 3D in units of `unit`
   double positive_area = 0, negative_area = 0, total_area = 0, angle_sum = 0;
   double log_area_squares = 0, stretch_squares = 0, uv_area_sum = 0;
   std::size_t positive = 0, negative = 0, measured = 0;
   for(const auto& v : triangles)
   {
-    std::array<Vec3, 3> q, t;
+    std::array<Vec3, 3> q, t; // relative to the first corner, in units of `unit`
     for(int k = 0; k < 3; ++k)
     {
-      q[k] = xyz(v[k]);
-      t[k] = uv(v[k]);
+      q[k] = divided(minus(xyz(v[k]), xyz(v[0])), unit);
+      t[k] = divided(minus(uv(v[k]), uv(v[0])), uv_unit);
       for(int c = 0; c < 2; ++c) t[k][c] *= s;
     }
     const Vec3 n = cross(minus(q[1], q[0]), minus(q[2], q[0]));
