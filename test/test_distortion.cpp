@@ -94,16 +94,20 @@ TEST(Distortion, AnAffineStretchMatchesTheHandComputedAnglesAreasAndStretch)
 
 TEST(Distortion, DoesNotDependOnTheScaleOfTheMeshOrOfTheMap)
 {
-  // The stretch above, its 3D positions and its uvs scaled by factors whose squares (or their
-  // products) overflow or underflow a double.
+  // The stretch above, away from the origin, its 3D positions and its uvs scaled by factors
+  // whose squares (or their products) overflow or underflow a double.
   auto measure = [](double xyz, double uv) {
     Mapped m;
-    m.add(0, 0, 0, 0, 0); m.add(xyz, 0, 0, 2 * uv, 0); m.add(0, xyz, 0, 0, uv);
+    m.add(3 * xyz, -xyz, 2 * xyz, 5 * uv, uv);
+    m.add(4 * xyz, -xyz, 2 * xyz, 7 * uv, uv);
+    m.add(3 * xyz, 0, 2 * xyz, 5 * uv, 2 * uv);
     m.mesh.add_face(m.v[0], m.v[1], m.v[2]);
     return m.measure();
   };
   const auto unit = measure(1, 1);
-  const double factors[][2] = {{1e-200, 1}, {1e200, 1}, {1, 1e-250}, {1, 1e250}, {1e-180, 1e-150}, {1e180, 1e160}, {1e-100, 1e-100}};
+  EXPECT_NEAR(unit.linf_stretch, 10 / (3 + std::sqrt(10.)), 1e-12); // 1/s, as above
+  const double factors[][2] = {{1e-200, 1}, {1e200, 1}, {1, 1e-250}, {1, 1e250},
+                               {1e-180, 1e-150}, {1e180, 1e160}, {1e-100, 1e-100}};
   for(const auto& f : factors)
   {
     const auto d = measure(f[0], f[1]);
@@ -116,6 +120,7 @@ TEST(Distortion, DoesNotDependOnTheScaleOfTheMeshOrOfTheMap)
     EXPECT_NEAR(d.l2_stretch, unit.l2_stretch, 1e-12);
     EXPECT_NEAR(d.linf_stretch, unit.linf_stretch, 1e-12);
     EXPECT_EQ(d.degenerate_uv_faces, 0u);
+    EXPECT_EQ(d.flipped_faces, 0u);
   }
   // Eq. 3 is in squared 3D units.
   EXPECT_NEAR(measure(1e-100, 1e-100).l1_objective / (unit.l1_objective * 1e-200), 1, 1e-14);

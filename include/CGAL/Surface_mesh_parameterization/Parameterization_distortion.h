@@ -33,8 +33,8 @@ namespace Surface_mesh_parameterization {
 /// Distortion of a uv map of a triangle mesh, over the faces and edges whose vertices all have
 /// a uv. Every measure but the flip counts is taken after scaling the uv map by the one factor
 /// that best fits the 3D edge lengths (least squares; the L1 measures use the factor that best
-/// fits the L1 lengths), so that it does not depend on the scale of the map; nor, within the
-/// range of a double, on the scale of the mesh or of the map.
+/// fits the L1 lengths). Every measure but `scale` and `l1_objective` (in squared 3D units) is
+/// thus independent of the scales of the mesh and of the map, within the range of a double.
 struct Parameterization_distortion
 {
   std::size_t faces = 0;               ///< faces measured
@@ -109,8 +109,9 @@ double measure_unit(const std::vector<std::array<Vertex, 2> >& edges, Position p
 
 inline Vec3 divided(const Vec3& a, double unit) { return {a[0] / unit, a[1] / unit, a[2] / unit}; }
 
-// The measures over `edges` and `triangles` (arrays of vertex handles, all with a uv), with
-// `xyz(v)` and `uv(v)` the 3D and uv positions as `Vec3`.
+// The measures over `edges` and `triangles` (arrays of vertex handles, all with a uv; every
+// side of a triangle among the edges), with `xyz(v)` and `uv(v)` the 3D and uv positions as
+// `Vec3`.
 template <typename Vertex, typename Xyz, typename Uv>
 Parameterization_distortion measure_distortion(const std::vector<std::array<Vertex, 2> >& edges,
                                                const std::vector<std::array<Vertex, 3> >& triangles,

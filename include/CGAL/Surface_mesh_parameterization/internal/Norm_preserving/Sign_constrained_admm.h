@@ -27,10 +27,11 @@
 // mode the solve goes on until that certificate itself is at most the tolerance: from the point
 // where the default rule would stop, the bound is computed every 25 iterations, and the exact
 // optimum on the active set ADMM has found (Active_set_polish.h, whose multipliers make the
-// bound tight) is tried then, and again each time the iteration count has grown by half, five
-// times at most (doc/performance.md, change 23): each try corrects the active set up to 24 times (one factorization each), turning
-// only constraints violated, or of negative multiplier, beyond round-off, and fewer at a time
-// once the corrections stop shrinking: it settles at the default's stopping point on 34 of the
+// bound tight) is tried then, and again at the first certificate after the iteration count has
+// grown by half, five times at most (doc/performance.md, change 23): each try corrects the
+// active set up to 24 times (one factorization each), turning only constraints violated, or of
+// negative multiplier, beyond round-off, and fewer at a time once the corrections stop
+// shrinking: it settles at the default's stopping point on 34 of the
 // 35 benchmark meshes of up to 50,000 vertices, and on cow x3 (doc/performance.md, changes 8
 // and 9).
 //
