@@ -21,7 +21,10 @@
 // change 7; doc/decisions.md). On a slow tail the default mode tries the polish described below
 // as well: from iteration 150 (later on a mesh whose factorization costs more per entry of its
 // factor), then each time the iteration count has doubled, three times at most; a try that
-// certifies the tolerance ends the solve (doc/performance.md, change 15). The returned point is
+// certifies the tolerance ends the solve (doc/performance.md, change 15). A tail that has not
+// settled by iteration 1,000 (dense tubes seen end-on by the guess crept to the iteration
+// limit) is handed to the interior point on a mesh of up to 200,000 vertices, whose point the
+// polish then certifies (doc/performance.md, change 24). The returned point is
 // the last feasible one, so it satisfies every constraint exactly, and its distance to the
 // optimum is certified by a dual bound from the multipliers (Dual_bound.h). In the certified
 // mode the solve goes on until that certificate itself is at most the tolerance: from the point
@@ -47,6 +50,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 
+#include <CGAL/Surface_mesh_parameterization/Interior_point_quadratic_program_traits.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Active_set_polish.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Dual_bound.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
@@ -59,6 +63,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
@@ -87,6 +92,13 @@ constexpr double admm_default_tolerance = 2.5e-5; // of Norm_preserving_ADMM_sol
 constexpr int polish_default_minimum = 150;
 constexpr double polish_default_factor = 5;
 constexpr int polish_default_tries = 3, polish_certified_tries = 5;
+// The default mode hands a tail that has not settled by iteration `interior_point_after` to
+// the interior point, on a mesh of at most `interior_point_max_vertices` vertices (it needs
+// about 6 KB a vertex), then polishes its point on the constraints whose value is at most
+// `interior_point_active_value` (doc/performance.md, change 24).
+constexpr int interior_point_after = 1000;
+constexpr std::size_t interior_point_max_vertices = 200000;
+constexpr double interior_point_active_value = 1e-6;
 constexpr double polish_turn_tolerance = 1e-9;
 constexpr int polish_rounds = 24;
 constexpr double polish_shrink = 0.7;
@@ -331,6 +343,42 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     }
     return false;
   };
+  // The optimum by the interior point, in `uv` and `feasible`, with the multipliers of its
+  // stationarity, y = -2 r, where every constraint is inactive (the dual bound makes them
+  // consistent); the polish from its active set then certifies it. False if the interior point
+  // fails.
+  auto interior_point = [&]() {
+    Interior_point_quadratic_program_traits<double> qp;
+    assemble_sign_constrained_qp(geometry, lengths, signs, fixed, qp);
+    std::vector<double> x;
+    x.reserve(2 * n);
+    if(!qp.solve(std::back_inserter(x)) || x.size() != 2 * n ||
+       !std::all_of(x.begin(), x.end(), [](double value) { return std::isfinite(value); }))
+      return false;
+    for(std::size_t i = 0; i < n; ++i)
+      uv[i] = {x[2 * i], x[2 * i + 1]};
+    for(const Fixed_vertex& f : fixed)
+      uv[f.index] = f.target;
+    for(std::size_t e = 0; e < m; ++e)
+    {
+      const double r = sign_constrained_residual(geometry, lengths, signs, uv, e);
+      for(int c = 0; c < 2; ++c)
+      {
+        const double value = edge_value(e, c);
+        z[e][c] = value > interior_point_active_value ? value : 0.;
+        w[e][c] = -2. * r / rho;
+      }
+    }
+    feasible = uv;
+    projection.apply(feasible);
+    objective = sign_constrained_objective(geometry, lengths, signs, feasible);
+    result.gap = relative_gap(objective, dual_bound(), scale);
+    gap_is_current = true;
+    if(result.gap > settings.tolerance)
+      polish(); // replaces `feasible` and the gap if it certifies
+    return true;
+  };
+  bool interior_point_tried = false;
   result.outcome = Admm_outcome::ITERATION_LIMIT;
   for(int k = 1; k <= settings.max_iterations; ++k)
   {
@@ -400,6 +448,15 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
       next_polish = 2 * k;
       --polishes_left;
       if(polish())
+      {
+        result.outcome = Admm_outcome::CONVERGED;
+        break;
+      }
+    }
+    if(!settings.certified && k >= interior_point_after && !interior_point_tried && n <= interior_point_max_vertices)
+    {
+      interior_point_tried = true;
+      if(interior_point())
       {
         result.outcome = Admm_outcome::CONVERGED;
         break;
