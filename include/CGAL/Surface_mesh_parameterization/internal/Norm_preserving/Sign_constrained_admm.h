@@ -23,8 +23,9 @@
 // factor), then each time the iteration count has doubled, three times at most; a try that
 // certifies the tolerance ends the solve (doc/performance.md, change 15). A tail that has not
 // settled by iteration 1,000 (dense tubes seen end-on by the guess crept to the iteration
-// limit) is handed to the interior point on a mesh of up to 200,000 vertices, whose point the
-// polish then certifies (doc/performance.md, change 24). The returned point is
+// limit) is handed to the interior point on a mesh of up to 200,000 vertices, within the time
+// limit, and the polish then tries to certify its point (doc/performance.md, change 24). The
+// returned point is
 // the last feasible one, so it satisfies every constraint exactly, and its distance to the
 // optimum is certified by a dual bound from the multipliers (Dual_bound.h). In the certified
 // mode the solve goes on until that certificate itself is at most the tolerance: from the point
@@ -343,10 +344,10 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     }
     return false;
   };
-  // The optimum by the interior point, in `uv` and `feasible`, with the multipliers of its
-  // stationarity, y = -2 r, where every constraint is inactive (the dual bound makes them
-  // consistent); the polish from its active set then certifies it. False if the interior point
-  // fails.
+  // Solves the QP by the interior point into `uv` and `feasible`, with z from its constraint
+  // values (those at most `interior_point_active_value` active) and y = -2 r; the polish from
+  // that active set then tries to certify it. False, with nothing changed, if the interior
+  // point fails.
   auto interior_point = [&]() {
     Interior_point_quadratic_program_traits<double> qp;
     assemble_sign_constrained_qp(geometry, lengths, signs, fixed, qp);
@@ -357,8 +358,6 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
       return false;
     for(std::size_t i = 0; i < n; ++i)
       uv[i] = {x[2 * i], x[2 * i + 1]};
-    for(const Fixed_vertex& f : fixed)
-      uv[f.index] = f.target;
     for(std::size_t e = 0; e < m; ++e)
     {
       const double r = sign_constrained_residual(geometry, lengths, signs, uv, e);
@@ -453,7 +452,8 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
         break;
       }
     }
-    if(!settings.certified && k >= interior_point_after && !interior_point_tried && n <= interior_point_max_vertices)
+    if(!settings.certified && k >= interior_point_after && !interior_point_tried && n <= interior_point_max_vertices &&
+       seconds_since(begin) <= settings.time_limit)
     {
       interior_point_tried = true;
       if(interior_point())
