@@ -25,19 +25,18 @@
 // settled by iteration 1,000 (dense tubes seen end-on by the guess crept to the iteration
 // limit) is handed to the interior point on a mesh of up to 200,000 vertices, within the time
 // limit, and the polish then tries to certify its point (doc/performance.md, change 24). The
-// returned point is
-// the last feasible one, so it satisfies every constraint exactly, and its distance to the
-// optimum is certified by a dual bound from the multipliers (Dual_bound.h). In the certified
-// mode the solve goes on until that certificate itself is at most the tolerance: from the point
-// where the default rule would stop, the bound is computed every 25 iterations, and the exact
-// optimum on the active set ADMM has found (Active_set_polish.h, whose multipliers make the
-// bound tight) is tried then, and again at the first certificate after the iteration count has
-// grown by half, five times at most (doc/performance.md, change 23): each try corrects the
-// active set up to 24 times (one factorization each), turning only constraints violated, or of
-// negative multiplier, beyond round-off, and fewer at a time once the corrections stop
-// shrinking: it settles at the default's stopping point on 34 of the
-// 35 benchmark meshes of up to 50,000 vertices, and on cow x3 (doc/performance.md, changes 8
-// and 9).
+// returned point is the last feasible one, so it satisfies every constraint exactly, and its
+// distance to the optimum is certified by a dual bound from the multipliers (Dual_bound.h).
+// In the certified mode the solve goes on until that certificate itself is at most the
+// tolerance: from the point where the default rule would stop, the bound is computed every 25
+// iterations, and the exact optimum on the active set ADMM has found (Active_set_polish.h,
+// whose multipliers make the bound tight) is tried then, and again at the first certificate
+// after the iteration count has grown by half, five times at most (doc/performance.md, change
+// 23): each try corrects the active set up to 24 times (one factorization each), turning only
+// constraints violated, or of negative multiplier, beyond round-off, and fewer at a time once
+// the corrections stop shrinking: it settles at the default's stopping point on 34 of the 35
+// benchmark meshes of up to 50,000 vertices, and on cow x3 (doc/performance.md, changes 8 and
+// 9).
 //
 // Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
 // edge loops run in blocks of edges, the right-hand side is gathered per free vertex
@@ -52,6 +51,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIGN_CONSTRAINED_ADMM_H
 
 #include <CGAL/Surface_mesh_parameterization/Interior_point_quadratic_program_traits.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_QP_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Active_set_polish.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Dual_bound.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
@@ -64,7 +64,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
@@ -349,15 +348,13 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   // that active set then tries to certify it. False, with nothing changed, if the interior
   // point fails.
   auto interior_point = [&]() {
-    Interior_point_quadratic_program_traits<double> qp;
-    assemble_sign_constrained_qp(geometry, lengths, signs, fixed, qp);
-    std::vector<double> x;
-    x.reserve(2 * n);
-    if(!qp.solve(std::back_inserter(x)) || x.size() != 2 * n ||
-       !std::all_of(x.begin(), x.end(), [](double value) { return std::isfinite(value); }))
+    typedef Norm_preserving_QP_solver<Interior_point_quadratic_program_traits<double> > Exact_solver;
+    UV_vector exact(uv);
+    Exact_solver::State none;
+    Norm_preserving_solve_report report;
+    if(!Exact_solver().solve(Norm_preserving_problem{geometry, lengths, signs, fixed}, exact, none, report))
       return false;
-    for(std::size_t i = 0; i < n; ++i)
-      uv[i] = {x[2 * i], x[2 * i + 1]};
+    uv.swap(exact);
     for(std::size_t e = 0; e < m; ++e)
     {
       const double r = sign_constrained_residual(geometry, lengths, signs, uv, e);
