@@ -8,7 +8,6 @@
 #include <CGAL/Surface_mesh_parameterization/Combination_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Graph_based_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Two_column_cholesky.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OFF.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -18,11 +17,8 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
-#include <mutex>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -700,43 +696,6 @@ TEST(FuzzRegression, HugeCoordinateInAHexagon)
                                          "4 9 7 6 8\n4 11 5 2 10\n4 11 10 6 7\n");
   EXPECT_EQ(soup.status, SMP::OK) << soup.report.message;
 }
-
-#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-// The METIS ordering runs under the package's lock (the race it prevents shows only now and
-// then): a factorization started while the lock is held cannot finish until it is released.
-// The matrix is the Laplacian of a 200 x 200 grid, large enough for METIS (smaller ones go to
-// Eigen's AMD ordering, which needs no lock); it factors in a fraction of a second.
-TEST(Threads, TheMetisOrderingWaitsForTheLock)
-{
-  namespace NP = SMP::internal::Norm_preserving;
-  const int side = 200;
-  std::vector<Eigen::Triplet<double> > triplets;
-  for(int i = 0; i < side; ++i)
-    for(int j = 0; j < side; ++j)
-    {
-      const int k = i * side + j;
-      triplets.emplace_back(k, k, 4.1);
-      if(i > 0) triplets.emplace_back(k, k - side, -1.);
-      if(j > 0) triplets.emplace_back(k, k - 1, -1.);
-    }
-  NP::Sparse_matrix lower(side * side, side * side);
-  lower.setFromTriplets(triplets.begin(), triplets.end());
-  std::atomic<bool> done(false), factored(false);
-  std::unique_lock<std::mutex> held(NP::metis_mutex());
-  std::thread worker([&] {
-    NP::Two_column_cholesky cholesky;
-    factored = cholesky.compute(lower);
-    done = true;
-  });
-  for(int k = 0; k < 200 && !done; ++k)
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  EXPECT_FALSE(done) << "the analysis did not wait for the METIS lock";
-  held.unlock();
-  worker.join();
-  EXPECT_TRUE(done);
-  EXPECT_TRUE(factored);
-}
-#endif
 
 // Determinism and thread safety: the parameterizer keeps no shared state.
 TEST(Threads, TwoParameterizersOnTwoThreadsGiveTheSequentialUvs)

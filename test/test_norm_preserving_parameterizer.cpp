@@ -23,10 +23,15 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -400,6 +405,26 @@ SMP::internal::Norm_preserving::Sparse_matrix free_laplacian(const Mesh& mesh)
   return NP::free_vertex_laplacian(geometry, NP::free_vertex_indices(geometry.points.size(), fixed));
 }
 
+// Two right-hand sides for n unknowns: column c of row i is sin(0.37 (2 i + c)).
+Eigen::MatrixXd two_right_hand_sides(Eigen::Index n)
+{
+  Eigen::MatrixXd b(n, 2);
+  for(Eigen::Index i = 0; i < n; ++i)
+    for(Eigen::Index c = 0; c < 2; ++c)
+      b(i, c) = std::sin(0.37 * double(2 * i + c));
+  return b;
+}
+
+// The two columns of `b` solved by the two-column solve (which takes them interleaved).
+Eigen::MatrixXd two_column_solve(const SMP::internal::Norm_preserving::Two_column_cholesky& cholesky, const Eigen::MatrixXd& b)
+{
+  Eigen::MatrixXd x = b.transpose(); // column-major: x0 y0 x1 y1 ...
+  std::vector<double> interleaved(x.data(), x.data() + x.size());
+  cholesky.solve(interleaved);
+  std::copy(interleaved.begin(), interleaved.end(), x.data());
+  return x.transpose();
+}
+
 // The two-column solve, split into parts solved on several threads, matches Eigen's own
 // LDL' solve of the same Laplacian; a small factor (nefertiti, 299 vertices) is not split,
 // the factor of a few thousand vertices is (cow, AMD order).
@@ -416,24 +441,14 @@ TEST(TwoColumnCholesky, SolvesLikeEigenAndSplitsLargeFactors)
       EXPECT_EQ(cholesky.sequential_columns(), n);
     else if(name == "cow")
       EXPECT_LT(cholesky.sequential_columns(), n / 10) << "the factor of cow is split into parts";
-#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD // the METIS ordering's tree; Eigen's AMD one may split worse
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD // CHOLMOD's AMD ordering's tree; Eigen's may split worse
     else
       EXPECT_LT(cholesky.sequential_columns(), n / 20) << "the factor of bunny00 is split into parts";
 #endif
     Eigen::SimplicialLDLT<NP::Sparse_matrix, Eigen::Lower> ldlt(lower);
     ASSERT_EQ(ldlt.info(), Eigen::Success);
-    Eigen::MatrixXd b(n, 2);
-    std::vector<double> interleaved(2 * n);
-    for(std::size_t i = 0; i < n; ++i)
-      for(int c = 0; c < 2; ++c)
-        interleaved[2 * i + std::size_t(c)] = b(Eigen::Index(i), c) = std::sin(0.37 * double(2 * i + std::size_t(c)));
-    cholesky.solve(interleaved);
-    const Eigen::MatrixXd x = ldlt.solve(b);
-    double difference = 0;
-    for(std::size_t i = 0; i < n; ++i)
-      for(int c = 0; c < 2; ++c)
-        difference = std::max(difference, std::abs(interleaved[2 * i + std::size_t(c)] - x(Eigen::Index(i), c)));
-    EXPECT_LT(difference, 1e-9 * x.cwiseAbs().maxCoeff()) << name;
+    const Eigen::MatrixXd b = two_right_hand_sides(lower.rows()), x = ldlt.solve(b);
+    EXPECT_LT((two_column_solve(cholesky, b) - x).cwiseAbs().maxCoeff(), 1e-9 * x.cwiseAbs().maxCoeff()) << name;
   }
 }
 
@@ -458,21 +473,102 @@ TEST(TwoColumnCholesky, SolvesByRunsOfColumns)
   NP::Two_column_cholesky cholesky;
   ASSERT_TRUE(cholesky.compute(lower));
   EXPECT_EQ(cholesky.supernode_count(), 1u);
-  std::vector<double> interleaved(2 * n);
-  Eigen::MatrixXd b(n, 2);
-  for(int i = 0; i < n; ++i)
-    for(int c = 0; c < 2; ++c)
-      interleaved[std::size_t(2 * i + c)] = b(i, c) = std::sin(0.37 * double(2 * i + c));
-  cholesky.solve(interleaved);
-  const Eigen::MatrixXd x = dense.ldlt().solve(b);
-  for(int i = 0; i < n; ++i)
-    for(int c = 0; c < 2; ++c)
-      EXPECT_NEAR(interleaved[std::size_t(2 * i + c)], x(i, c), 1e-12 * x.cwiseAbs().maxCoeff());
+  const Eigen::MatrixXd b = two_right_hand_sides(n), x = dense.ldlt().solve(b);
+  EXPECT_LT((two_column_solve(cholesky, b) - x).cwiseAbs().maxCoeff(), 1e-12 * x.cwiseAbs().maxCoeff());
 
   const NP::Sparse_matrix laplacian = free_laplacian(np_test::load_mesh("cow"));
   ASSERT_TRUE(cholesky.compute(laplacian));
   EXPECT_LT(cholesky.supernode_count(), std::size_t(laplacian.rows()) * 3 / 4);
 }
+
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+// The lower triangle of a 3D grid's Laplacian plus 0.1 times the identity, side^3 rows: a
+// matrix that AMD fills with hundreds of entries a row (a mesh's Laplacian: 20-70).
+SMP::internal::Norm_preserving::Sparse_matrix cube_grid_laplacian(int side)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  const int n = side * side * side;
+  std::vector<Eigen::Triplet<double> > triplets;
+  for(int k = 0; k < n; ++k)
+  {
+    triplets.emplace_back(k, k, 6.1);
+    if(k % side > 0) triplets.emplace_back(k, k - 1, -1.);
+    if(k / side % side > 0) triplets.emplace_back(k, k - side, -1.);
+    if(k / (side * side) > 0) triplets.emplace_back(k, k - side * side, -1.);
+  }
+  NP::Sparse_matrix lower(n, n);
+  lower.setFromTriplets(triplets.begin(), triplets.end());
+  return lower;
+}
+
+// CHOLMOD's analysis of `lower` by one ordering: the position of each unknown in its order,
+// and the entries of its factor.
+std::pair<std::vector<int>, double> cholmod_order(const SMP::internal::Norm_preserving::Sparse_matrix& lower, int ordering)
+{
+  cholmod_common common;
+  cholmod_start(&common);
+  common.supernodal = ordering == CHOLMOD_METIS ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+  common.nmethods = 1;
+  common.method[0].ordering = ordering;
+  cholmod_sparse view = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
+  cholmod_factor* factor = cholmod_analyze(&view, &common);
+  std::vector<int> position(std::size_t(lower.rows()));
+  const int* permutation = static_cast<const int*>(factor->Perm);
+  for(std::size_t k = 0; k < position.size(); ++k)
+    position[std::size_t(permutation[k])] = int(k);
+  const double entries = common.lnz;
+  cholmod_free_factor(&factor, &common);
+  cholmod_finish(&common);
+  return {position, entries};
+}
+
+// Where CHOLMOD factors (from 25,000 rows), the factor is in AMD's order while AMD's factor
+// has fewer than metis_fill_per_row entries a row (bunny00's Laplacian: 29), in METIS's order
+// from there (a 30 x 30 x 30 grid: over 200); either solves its system (residual within 1e-10
+// of the right-hand side; 4e-13 measured).
+TEST(TwoColumnCholesky, OrdersByMetisOnlyWhereAmdFillsMuch)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  const std::pair<NP::Sparse_matrix, bool> cases[] = {{free_laplacian(np_test::load_mesh("bunny00")), false},
+                                                       {cube_grid_laplacian(30), true}};
+  for(const auto& [lower, metis] : cases)
+  {
+    const std::size_t n = std::size_t(lower.rows());
+    ASSERT_GE(n, NP::cholmod_minimum_rows);
+    const std::pair<std::vector<int>, double> amd = cholmod_order(lower, CHOLMOD_AMD);
+    EXPECT_EQ(amd.second >= NP::metis_fill_per_row * double(n), metis) << n << " rows";
+    NP::Two_column_cholesky cholesky;
+    ASSERT_TRUE(cholesky.compute(lower)) << n << " rows";
+    EXPECT_TRUE(cholesky.positions() == (metis ? cholmod_order(lower, CHOLMOD_METIS).first : amd.first)) << n << " rows";
+    const Eigen::MatrixXd b = two_right_hand_sides(lower.rows());
+    const Eigen::MatrixXd residual = lower.selfadjointView<Eigen::Lower>() * two_column_solve(cholesky, b) - b;
+    EXPECT_LT(residual.cwiseAbs().maxCoeff(), 1e-10 * b.cwiseAbs().maxCoeff()) << n << " rows";
+  }
+}
+
+// The METIS ordering runs under the package's lock (the race it prevents shows only now and
+// then): a factorization started while the lock is held cannot finish until it is released.
+// The matrix (a 30 x 30 x 30 grid) is one METIS orders; it factors in a fraction of a second.
+TEST(Threads, TheMetisOrderingWaitsForTheLock)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  const NP::Sparse_matrix lower = cube_grid_laplacian(30);
+  std::atomic<bool> done(false), factored(false);
+  std::unique_lock<std::mutex> held(NP::metis_mutex());
+  std::thread worker([&] {
+    NP::Two_column_cholesky cholesky;
+    factored = cholesky.compute(lower);
+    done = true;
+  });
+  for(int k = 0; k < 200 && !done; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_FALSE(done) << "the analysis did not wait for the METIS lock";
+  held.unlock();
+  worker.join();
+  EXPECT_TRUE(done);
+  EXPECT_TRUE(factored);
+}
+#endif
 
 // Where the ADMM stops on a component from a skewed start: its point, the factored Laplacian,
 // and the constraints at or near equality there (within 1e-4 of the mean L1 edge length), the
@@ -510,11 +606,11 @@ struct Admm_stop
   }
 };
 
-// The polish numbers its unknowns along the elimination order of the Laplacian's factor (AMD,
-// or METIS on bunny00 where CHOLMOD is configured) and does not order its systems anew: on the
-// active set where the ADMM stops, the factor of the polish's normal equations in that order
-// is at most 1.25 times the size of the factor in AMD order of the same matrix (3 to 9 times
-// with each cluster placed at its first member instead of its last).
+// The polish numbers its unknowns along the elimination order of the Laplacian's factor (AMD:
+// Eigen's, or CHOLMOD's on bunny00 where it is configured) and does not order its systems
+// anew: on the active set where the ADMM stops, the factor of the polish's normal equations in
+// that order is at most 1.25 times the size of the factor in AMD order of the same matrix (3
+// to 9 times with each cluster placed at its first member instead of its last).
 TEST(ActiveSetPolish, FactorsInTheLaplaciansOrderWithLittleFill)
 {
   namespace NP = SMP::internal::Norm_preserving;
@@ -732,7 +828,7 @@ TEST(ActiveSetPolish, SolvesAFewChangesOnTheLastFactorization)
 
 // One thread or several: the same uvs, bit for bit, on a mesh of a few thousand vertices (cow:
 // its AMD-ordered factor split into parts, its loops in several blocks) and on a larger one
-// (bunny00: METIS-ordered).
+// (bunny00: factored by CHOLMOD where it is configured).
 TEST(NormPreservingADMMSolver, GivesTheSameBitsOnOneThreadAsOnSeveral)
 {
 #ifdef CGAL_LINKED_WITH_TBB

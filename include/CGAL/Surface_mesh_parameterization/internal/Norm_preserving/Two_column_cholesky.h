@@ -6,12 +6,13 @@
 // (x0 y0 x1 y1 ...): the ADMM solver's inner loop solves the same Laplacian for u and v in
 // every iteration, and one pass over the factor for both is faster than two column solves
 // (and than CHOLMOD's supernodal solve, whose BLAS calls are tiny for two columns). The
-// factorization itself is CHOLMOD's supernodal one when the package is configured with
-// CHOLMOD and the matrix has at least 25,000 rows, converted to simplicial form; Eigen's
-// SimplicialLLT in AMD order otherwise (faster below that size). CHOLMOD orders with
-// METIS: its analysis takes longer than AMD's, but the factor is smaller and its elimination
-// tree splits evenly (below), which hundreds of solves repay. The measurements behind these
-// choices are in doc/performance.md.
+// factorization itself is CHOLMOD's when the package is configured with CHOLMOD and the
+// matrix has at least 25,000 rows, converted to simplicial form; Eigen's SimplicialLLT in AMD
+// order otherwise (faster below that size). CHOLMOD orders with AMD, and with METIS (its
+// supernodal factorization) when AMD's factor would have `metis_fill_per_row` entries a row
+// or more: METIS's analysis takes 9-14 times as long as AMD's; the solves repay it where AMD
+// fills that much (METIS's factor is then 20-33% smaller), not below. The measurements behind
+// these choices are in doc/performance.md.
 //
 // The solve goes through the factor by supernodes: runs of consecutive columns with the same
 // rows below them, stored as a dense triangle and the rows below it, each row's entries side
@@ -47,6 +48,10 @@ namespace internal {
 namespace Norm_preserving {
 
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+// From this many entries a row in the factor in AMD's order, a matrix factored by CHOLMOD is
+// ordered by METIS instead (doc/performance.md, change 25).
+constexpr double metis_fill_per_row = 45;
+
 // METIS draws from a random generator held in a global, seeded at each call: two orderings at
 // once on two threads would interleave its draws and differ from run to run. This lock
 // serializes the analyses of this package only, not other METIS users.
@@ -148,7 +153,7 @@ private:
   {
     m_n = std::size_t(lower.rows());
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-    if(m_n < cholmod_minimum_rows) // METIS's analysis and the supernodal BLAS calls cost more than they save
+    if(m_n < cholmod_minimum_rows) // Eigen's factorization is faster at this size
       return factor_simplicial(lower);
     struct Cholmod // frees the factor and the workspace on every way out
     {
@@ -162,11 +167,16 @@ private:
       }
     } cholmod;
     cholmod_common& common = cholmod.common;
-    common.supernodal = CHOLMOD_SUPERNODAL;
+    common.supernodal = CHOLMOD_SIMPLICIAL;
     common.nmethods = 1;
-    common.method[0].ordering = CHOLMOD_METIS;
+    common.method[0].ordering = CHOLMOD_AMD;
     cholmod_sparse view = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
+    cholmod.factor = cholmod_analyze(&view, &common);
+    if(cholmod.factor != nullptr && common.lnz >= metis_fill_per_row * double(m_n))
     {
+      cholmod_free_factor(&cholmod.factor, &common);
+      common.supernodal = CHOLMOD_SUPERNODAL;
+      common.method[0].ordering = CHOLMOD_METIS;
       std::lock_guard<std::mutex> lock(metis_mutex());
       cholmod.factor = cholmod_analyze(&view, &common);
     }
