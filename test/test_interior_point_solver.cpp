@@ -174,6 +174,26 @@ TEST(InteriorPointSolver, ReportsTheIterationLimit)
   EXPECT_NE(qp.statistics().message.find("no convergence"), std::string::npos);
 }
 
+// A time limit of zero (or less) stops the solve before its first iteration, with nothing
+// written; set back to infinity (the default), the solve gives the same bits as without one.
+TEST(InteriorPointSolver, ReportsTheTimeLimit)
+{
+  SMP::Interior_point_quadratic_program_traits<double> qp;
+  random_program(3, qp);
+  std::vector<double> unlimited, stopped, limited;
+  ASSERT_TRUE(qp.solve(std::back_inserter(unlimited))) << qp.statistics().message;
+  qp.set_time_limit(0.);
+  EXPECT_FALSE(qp.solve(std::back_inserter(stopped)));
+  EXPECT_TRUE(stopped.empty());
+  EXPECT_EQ(qp.statistics().iterations, 0);
+  EXPECT_NE(qp.statistics().message.find("time limit"), std::string::npos);
+  qp.set_time_limit(-1.);
+  EXPECT_FALSE(qp.solve(std::back_inserter(stopped)));
+  qp.set_time_limit(std::numeric_limits<double>::infinity());
+  ASSERT_TRUE(qp.solve(std::back_inserter(limited))) << qp.statistics().message;
+  EXPECT_EQ(limited, unlimited);
+}
+
 template <typename Parameterizer>
 double solved_objective(Mesh mesh, Parameterizer& parameterizer)
 {

@@ -13,6 +13,7 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -100,7 +101,7 @@ public:
   void set_u(std::size_t i, const FT& value) { grow_constraints(i + 1); m_u[i] = CGAL::to_double(value); }
 
   /// solves the program and writes the `n` values of `x` to `solution`.
-  /// \returns `false` if the program is malformed or infeasible, or the iteration limit was hit;
+  /// \returns `false` if the program is malformed or infeasible, or the iteration or time limit was hit;
   ///          `statistics().message` then says why and nothing is written.
   template <typename OutputIterator>
   bool solve(OutputIterator solution)
@@ -124,6 +125,9 @@ public:
   void set_tolerance(double tolerance) { m_tolerance = tolerance; }
   /// sets the iteration limit.
   void set_max_iterations(int iterations) { m_max_iterations = iterations; }
+  /// sets the time limit in seconds of each `solve()` (default: none); a solve that reaches it
+  /// returns `false`.
+  void set_time_limit(double seconds) { m_time_limit = seconds; }
 
 private:
   using Triplet = std::tuple<std::size_t, std::size_t, double>;
@@ -151,6 +155,11 @@ private:
   bool solve_in_doubles(std::vector<double>& x)
   {
     using namespace internal::Norm_preserving;
+    typedef std::chrono::steady_clock Clock;
+    const std::chrono::duration<double> limit((std::max)(m_time_limit, 0.));
+    const Clock::time_point deadline = m_time_limit < 1e9 // beyond (or NaN): none, and no overflow
+      ? Clock::now() + std::chrono::duration_cast<Clock::duration>(limit)
+      : Clock::time_point::max();
     grow_variables(m_n);
     grow_constraints(m_m);
     const int n = static_cast<int>(m_n), m = static_cast<int>(m_m);
@@ -242,7 +251,7 @@ private:
     qp.G.setFromTriplets(g_triplets.begin(), g_triplets.end());
     qp.h = Eigen::Map<Eigen::VectorXd>(h.data(), Eigen::Index(h.size()));
 
-    const Interior_point_result result = solve_inequality_qp(qp, m_tolerance, m_max_iterations);
+    const Interior_point_result result = solve_inequality_qp(qp, m_tolerance, m_max_iterations, deadline);
     m_statistics.converged = result.converged;
     m_statistics.iterations = result.iterations;
     m_statistics.primal_residual = result.primal_residual;
@@ -250,6 +259,8 @@ private:
     m_statistics.complementarity = result.complementarity;
     if(result.factorization_failed)
       return fail("the normal matrix could not be factored");
+    if(result.time_limit_reached)
+      return fail("time limit reached after " + std::to_string(result.iterations) + " iterations");
     if(!result.converged)
       return fail("no convergence within " + std::to_string(m_max_iterations) + " iterations");
 
@@ -279,6 +290,7 @@ private:
 
   double m_tolerance;
   int m_max_iterations;
+  double m_time_limit = std::numeric_limits<double>::infinity();
   std::size_t m_n = 0, m_m = 0;
   std::vector<Triplet> m_P, m_A;
   std::vector<double> m_q, m_l, m_u;

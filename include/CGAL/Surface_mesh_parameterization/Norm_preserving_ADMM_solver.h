@@ -36,7 +36,7 @@ namespace Surface_mesh_parameterization {
 ///   objective, or near a zero optimum to 1e-12 times the objective of the zero map); a solve
 ///   that has not stopped by iteration 1,000, on a mesh of at most 200,000 vertices and within
 ///   the time limit, is finished by the interior point (`Interior_point_quadratic_program_traits`,
-///   which does not watch the time limit), whose point the exact mode's active-set optimum
+///   within what is left of the time limit), whose point the exact mode's active-set optimum
 ///   then certifies within `tolerance` when it can (otherwise the reported bound is looser);
 /// - `certified()`, the exact mode: the solve stops only when the certified gap is at most
 ///   `tolerance` (default 1e-9); from where the default would stop, it also tries the exact

@@ -15,6 +15,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -39,6 +40,7 @@ struct Interior_point_result
 {
   bool converged = false;
   bool factorization_failed = false;
+  bool time_limit_reached = false;
   int iterations = 0;
   double primal_residual = 0; // ||Gx + s - h||_inf
   double dual_residual = 0;   // ||Px + q + G'z||_inf
@@ -145,10 +147,13 @@ inline double interior_step(const Eigen::VectorXd& s, const Eigen::VectorXd& ds,
 
 // Solves the QP to the relative tolerance `tolerance` on primal and dual residuals and on
 // the duality gap. Converges to the analytic centre of the optimal face, which makes the
-// optimum unique and deterministic when the QP has a continuum of minimizers.
+// optimum unique and deterministic when the QP has a continuum of minimizers. Stops before an
+// iteration that would start after `deadline`.
 inline Interior_point_result solve_inequality_qp(const Inequality_qp& qp,
                                                  double tolerance,
-                                                 int max_iterations)
+                                                 int max_iterations,
+                                                 std::chrono::steady_clock::time_point deadline =
+                                                   std::chrono::steady_clock::time_point::max())
 {
   Interior_point_result result;
   const Eigen::Index n = qp.q.size();
@@ -222,6 +227,11 @@ inline Interior_point_result solve_inequality_qp(const Inequality_qp& qp,
     }
     if(result.iterations >= max_iterations)
       break;
+    if(std::chrono::steady_clock::now() >= deadline)
+    {
+      result.time_limit_reached = true;
+      break;
+    }
 
     const Eigen::VectorXd w = z.cwiseQuotient(s);
     delta = delta_floor;

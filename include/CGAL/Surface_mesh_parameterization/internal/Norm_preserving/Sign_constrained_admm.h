@@ -343,16 +343,19 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     }
     return false;
   };
-  // Solves the QP by the interior point into `uv` and `feasible`, with z from its constraint
-  // values (those at most `interior_point_active_value` active) and y = -2 r; the polish from
-  // that active set then tries to certify it. False, with nothing changed, if the interior
-  // point fails.
+  // Solves the QP by the interior point, within what is left of the time limit, into `uv` and
+  // `feasible`, with z from its constraint values (those at most `interior_point_active_value`
+  // active) and y = -2 r; the polish from that active set then tries to certify it. False,
+  // with nothing changed, if the interior point fails or runs out of time.
   auto interior_point = [&]() {
-    typedef Norm_preserving_QP_solver<Interior_point_quadratic_program_traits<double> > Exact_solver;
+    typedef Interior_point_quadratic_program_traits<double> Traits;
+    Traits traits;
+    traits.set_time_limit(settings.time_limit - seconds_since(begin));
     UV_vector exact(uv);
-    Exact_solver::State none;
+    Norm_preserving_QP_solver<Traits>::State none;
     Norm_preserving_solve_report report;
-    if(!Exact_solver().solve(Norm_preserving_problem{geometry, lengths, signs, fixed}, exact, none, report))
+    if(!Norm_preserving_QP_solver<Traits>(traits).solve(Norm_preserving_problem{geometry, lengths, signs, fixed}, exact,
+                                                        none, report))
       return false;
     uv.swap(exact);
     for(std::size_t e = 0; e < m; ++e)
