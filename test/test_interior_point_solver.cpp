@@ -175,23 +175,29 @@ TEST(InteriorPointSolver, ReportsTheIterationLimit)
 }
 
 // A time limit of zero (or less) stops the solve before its first iteration, with nothing
-// written; set back to infinity (the default), the solve gives the same bits as without one.
+// written; infinity (the default), NaN or 1e300 seconds are no limit: the same bits as without.
 TEST(InteriorPointSolver, ReportsTheTimeLimit)
 {
   SMP::Interior_point_quadratic_program_traits<double> qp;
   random_program(3, qp);
-  std::vector<double> unlimited, stopped, limited;
+  std::vector<double> unlimited;
   ASSERT_TRUE(qp.solve(std::back_inserter(unlimited))) << qp.statistics().message;
-  qp.set_time_limit(0.);
-  EXPECT_FALSE(qp.solve(std::back_inserter(stopped)));
-  EXPECT_TRUE(stopped.empty());
-  EXPECT_EQ(qp.statistics().iterations, 0);
-  EXPECT_NE(qp.statistics().message.find("time limit"), std::string::npos);
-  qp.set_time_limit(-1.);
-  EXPECT_FALSE(qp.solve(std::back_inserter(stopped)));
-  qp.set_time_limit(std::numeric_limits<double>::infinity());
-  ASSERT_TRUE(qp.solve(std::back_inserter(limited))) << qp.statistics().message;
-  EXPECT_EQ(limited, unlimited);
+  for(double limit : {0., -1., -std::numeric_limits<double>::infinity()})
+  {
+    std::vector<double> stopped;
+    qp.set_time_limit(limit);
+    EXPECT_FALSE(qp.solve(std::back_inserter(stopped))) << limit;
+    EXPECT_TRUE(stopped.empty()) << limit;
+    EXPECT_EQ(qp.statistics().iterations, 0) << limit;
+    EXPECT_NE(qp.statistics().message.find("time limit"), std::string::npos) << limit;
+  }
+  for(double limit : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), 1e300})
+  {
+    std::vector<double> x;
+    qp.set_time_limit(limit);
+    ASSERT_TRUE(qp.solve(std::back_inserter(x))) << limit << ": " << qp.statistics().message;
+    EXPECT_EQ(x, unlimited) << limit;
+  }
 }
 
 template <typename Parameterizer>

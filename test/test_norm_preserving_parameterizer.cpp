@@ -416,7 +416,8 @@ Eigen::MatrixXd two_right_hand_sides(Eigen::Index n)
 }
 
 // The two columns of `b` solved by the two-column solve (which takes them interleaved).
-Eigen::MatrixXd two_column_solve(const SMP::internal::Norm_preserving::Two_column_cholesky& cholesky, const Eigen::MatrixXd& b)
+Eigen::MatrixXd two_column_solve(const SMP::internal::Norm_preserving::Two_column_cholesky& cholesky,
+                                 const Eigen::MatrixXd& b)
 {
   Eigen::MatrixXd x = b.transpose(); // column-major: x0 y0 x1 y1 ...
   std::vector<double> interleaved(x.data(), x.data() + x.size());
@@ -503,7 +504,8 @@ SMP::internal::Norm_preserving::Sparse_matrix cube_grid_laplacian(int side)
 
 // CHOLMOD's analysis of `lower` by one ordering: the position of each unknown in its order,
 // and the entries of its factor.
-std::pair<std::vector<int>, double> cholmod_order(const SMP::internal::Norm_preserving::Sparse_matrix& lower, int ordering)
+std::pair<std::vector<int>, double> cholmod_order(const SMP::internal::Norm_preserving::Sparse_matrix& lower,
+                                                  int ordering)
 {
   cholmod_common common;
   cholmod_start(&common);
@@ -512,7 +514,10 @@ std::pair<std::vector<int>, double> cholmod_order(const SMP::internal::Norm_pres
   common.method[0].ordering = ordering;
   cholmod_sparse view = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
   cholmod_factor* factor = cholmod_analyze(&view, &common);
+  EXPECT_NE(factor, nullptr);
   std::vector<int> position(std::size_t(lower.rows()));
+  if(factor == nullptr)
+    return {position, 0.};
   const int* permutation = static_cast<const int*>(factor->Perm);
   for(std::size_t k = 0; k < position.size(); ++k)
     position[std::size_t(permutation[k])] = int(k);
@@ -543,6 +548,32 @@ TEST(TwoColumnCholesky, OrdersByMetisOnlyWhereAmdFillsMuch)
     const Eigen::MatrixXd b = two_right_hand_sides(lower.rows());
     const Eigen::MatrixXd residual = lower.selfadjointView<Eigen::Lower>() * two_column_solve(cholesky, b) - b;
     EXPECT_LT(residual.cwiseAbs().maxCoeff(), 1e-10 * b.cwiseAbs().maxCoeff()) << n << " rows";
+  }
+}
+
+// A symmetric matrix that is not positive definite is refused in either order: a 200 x 200
+// grid with 3 on the diagonal (eigenvalues from -1 to 7; AMD's order, 27 entries a row) and
+// the 30 x 30 x 30 grid with 5 (from -1 to 11; METIS's order).
+TEST(TwoColumnCholesky, RefusesAMatrixThatIsNotPositiveDefinite)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  const int side = 200;
+  std::vector<Eigen::Triplet<double> > triplets;
+  for(int k = 0; k < side * side; ++k)
+  {
+    triplets.emplace_back(k, k, 3.);
+    if(k % side > 0) triplets.emplace_back(k, k - 1, -1.);
+    if(k >= side) triplets.emplace_back(k, k - side, -1.);
+  }
+  NP::Sparse_matrix square(side * side, side * side);
+  square.setFromTriplets(triplets.begin(), triplets.end());
+  NP::Sparse_matrix cube = cube_grid_laplacian(30);
+  cube.diagonal().setConstant(5.);
+  for(const NP::Sparse_matrix& indefinite : {square, cube})
+  {
+    ASSERT_GE(std::size_t(indefinite.rows()), NP::cholmod_minimum_rows);
+    NP::Two_column_cholesky cholesky;
+    EXPECT_FALSE(cholesky.compute(indefinite)) << indefinite.rows() << " rows";
   }
 }
 

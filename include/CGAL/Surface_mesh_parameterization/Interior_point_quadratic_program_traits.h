@@ -125,8 +125,10 @@ public:
   void set_tolerance(double tolerance) { m_tolerance = tolerance; }
   /// sets the iteration limit.
   void set_max_iterations(int iterations) { m_max_iterations = iterations; }
-  /// sets the time limit in seconds of each `solve()` (default: none); a solve that reaches it
-  /// returns `false`.
+  /// sets the time limit in seconds of each `solve()` (default: none), checked before each
+  /// iteration (the setup and the iteration under way are not cut short); a solve that reaches
+  /// it returns `false`. Zero or less stops before the first iteration; infinity, NaN or 1e9
+  /// seconds or more mean no limit.
   void set_time_limit(double seconds) { m_time_limit = seconds; }
 
 private:

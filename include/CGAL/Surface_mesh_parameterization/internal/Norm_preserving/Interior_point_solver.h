@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <vector>
 
 namespace CGAL {
@@ -162,8 +163,14 @@ inline Interior_point_result solve_inequality_qp(const Inequality_qp& qp,
   Sparse_cholesky cholesky;
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
   cholesky.cholmod().print = 0; // a failed factorization is retried with more regularization
-#endif
+  {
+    // CHOLMOD's default analysis tries METIS too where AMD fills much.
+    std::lock_guard<std::mutex> lock(metis_mutex());
+    cholesky.analyzePattern(normal.matrix());
+  }
+#else
   cholesky.analyzePattern(normal.matrix());
+#endif
 
   normal.assemble(Eigen::VectorXd::Ones(m), 0.);
   const double delta_floor = 1e-13 * (std::max)(1., normal.max_diagonal());

@@ -349,13 +349,13 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   // with nothing changed, if the interior point fails or runs out of time.
   auto interior_point = [&]() {
     typedef Interior_point_quadratic_program_traits<double> Traits;
+    typedef Norm_preserving_QP_solver<Traits> Exact_solver;
     Traits traits;
     traits.set_time_limit(settings.time_limit - seconds_since(begin));
     UV_vector exact(uv);
-    Norm_preserving_QP_solver<Traits>::State none;
+    Exact_solver::State none;
     Norm_preserving_solve_report report;
-    if(!Norm_preserving_QP_solver<Traits>(traits).solve(Norm_preserving_problem{geometry, lengths, signs, fixed}, exact,
-                                                        none, report))
+    if(!Exact_solver(traits).solve(Norm_preserving_problem{geometry, lengths, signs, fixed}, exact, none, report))
       return false;
     uv.swap(exact);
     for(std::size_t e = 0; e < m; ++e)

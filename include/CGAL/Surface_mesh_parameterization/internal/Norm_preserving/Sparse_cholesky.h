@@ -14,6 +14,7 @@
 #endif
 
 #include <cstddef>
+#include <mutex>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
@@ -22,11 +23,21 @@ namespace Norm_preserving {
 
 using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-// Below this many rows Eigen's simplicial factorizations are faster than CHOLMOD's supernodal
-// one (doc/performance.md, change 7); the ADMM's Laplacian and the polish's system switch here.
+// Below this many rows Eigen's simplicial factorizations are faster than CHOLMOD's, supernodal
+// or simplicial (doc/performance.md, changes 7 and 25); the ADMM's Laplacian and the polish's
+// system switch here.
 constexpr std::size_t cholmod_minimum_rows = 25000;
 
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
+// METIS draws from a random generator held in a global, seeded at each call: two orderings at
+// once on two threads would interleave its draws and differ from run to run. This lock
+// serializes the analyses of this package that may call METIS, not other METIS users.
+inline std::mutex& metis_mutex()
+{
+  static std::mutex metis;
+  return metis;
+}
+
 using Sparse_cholesky = Eigen::CholmodSupernodalLLT<Sparse_matrix, Eigen::Lower>;
 #else
 using Sparse_cholesky = Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> >;

@@ -7,8 +7,8 @@
 // every iteration, and one pass over the factor for both is faster than two column solves
 // (and than CHOLMOD's supernodal solve, whose BLAS calls are tiny for two columns). The
 // factorization itself is CHOLMOD's when the package is configured with CHOLMOD and the
-// matrix has at least 25,000 rows, converted to simplicial form; Eigen's SimplicialLLT in AMD
-// order otherwise (faster below that size). CHOLMOD orders with AMD, and with METIS (its
+// matrix has at least 25,000 rows, converted to LL' in simplicial form; Eigen's SimplicialLLT
+// in AMD order otherwise (faster below that size). CHOLMOD orders with AMD, and with METIS (its
 // supernodal factorization) when AMD's factor would have `metis_fill_per_row` entries a row
 // or more: METIS's analysis takes 9-14 times as long as AMD's; the solves repay it where AMD
 // fills that much (METIS's factor is then 20-33% smaller), not below. The measurements behind
@@ -50,16 +50,7 @@ namespace Norm_preserving {
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
 // From this many entries a row in the factor in AMD's order, a matrix factored by CHOLMOD is
 // ordered by METIS instead (doc/performance.md, change 25).
-constexpr double metis_fill_per_row = 45;
-
-// METIS draws from a random generator held in a global, seeded at each call: two orderings at
-// once on two threads would interleave its draws and differ from run to run. This lock
-// serializes the analyses of this package only, not other METIS users.
-inline std::mutex& metis_mutex()
-{
-  static std::mutex metis;
-  return metis;
-}
+constexpr double metis_fill_per_row = 47;
 #endif
 
 class Two_column_cholesky
@@ -153,7 +144,7 @@ private:
   {
     m_n = std::size_t(lower.rows());
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-    if(m_n < cholmod_minimum_rows) // Eigen's factorization is faster at this size
+    if(m_n < cholmod_minimum_rows) // Eigen's factorization is faster at this size (performance.md, change 25)
       return factor_simplicial(lower);
     struct Cholmod // frees the factor and the workspace on every way out
     {
@@ -167,6 +158,7 @@ private:
       }
     } cholmod;
     cholmod_common& common = cholmod.common;
+    common.print = 0; // a matrix that is not positive definite is an answer (false), not a message
     common.supernodal = CHOLMOD_SIMPLICIAL;
     common.nmethods = 1;
     common.method[0].ordering = CHOLMOD_AMD;
@@ -181,8 +173,11 @@ private:
       cholmod.factor = cholmod_analyze(&view, &common);
     }
     cholmod_factor* factor = cholmod.factor;
+    // A simplicial factorization is LDL' and stops only at a zero pivot: a negative one shows
+    // when it is converted to LL' (a warning, the column left as it was), hence the checks after.
     if(factor == nullptr || !cholmod_factorize(&view, factor, &common) || common.status != CHOLMOD_OK
-       || factor->minor != factor->n || !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, factor, &common))
+       || factor->minor != factor->n || !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, factor, &common)
+       || common.status != CHOLMOD_OK || factor->minor != factor->n)
       return false;
     const int* first = static_cast<const int*>(factor->p);
     const int* rows = static_cast<const int*>(factor->i);
