@@ -11,7 +11,7 @@
 // in AMD order otherwise (faster below that size). CHOLMOD orders with AMD, and with METIS (its
 // supernodal factorization) when AMD's factor would have `metis_fill_per_row` entries a row
 // or more: METIS's analysis takes 9-14 times as long as AMD's; the solves repay it where AMD
-// fills that much (METIS's factor is then 20-33% smaller), not below. The measurements behind
+// fills that much (METIS's factor is then 25-33% smaller), not below. The measurements behind
 // these choices are in doc/performance.md.
 //
 // The solve goes through the factor by supernodes: runs of consecutive columns with the same
