@@ -483,19 +483,22 @@ TEST(TwoColumnCholesky, SolvesByRunsOfColumns)
 }
 
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-// The lower triangle of a 3D grid's Laplacian plus 0.1 times the identity, side^3 rows: a
-// matrix that AMD fills with hundreds of entries a row (a mesh's Laplacian: 20-70).
-SMP::internal::Norm_preserving::Sparse_matrix cube_grid_laplacian(int side)
+// The lower triangle of the matrix of a grid of `side`^`dimensions` nodes with `diagonal` on
+// the diagonal and -1 between neighbours. In 3D with 6.1 (the Laplacian plus 0.1 times the
+// identity), a matrix that AMD fills with hundreds of entries a row (a mesh's Laplacian: 20-70).
+SMP::internal::Norm_preserving::Sparse_matrix grid_matrix(int side, int dimensions, double diagonal)
 {
   namespace NP = SMP::internal::Norm_preserving;
-  const int n = side * side * side;
+  int n = 1;
+  for(int d = 0; d < dimensions; ++d)
+    n *= side;
   std::vector<Eigen::Triplet<double> > triplets;
   for(int k = 0; k < n; ++k)
   {
-    triplets.emplace_back(k, k, 6.1);
-    if(k % side > 0) triplets.emplace_back(k, k - 1, -1.);
-    if(k / side % side > 0) triplets.emplace_back(k, k - side, -1.);
-    if(k / (side * side) > 0) triplets.emplace_back(k, k - side * side, -1.);
+    triplets.emplace_back(k, k, diagonal);
+    for(int d = 0, stride = 1; d < dimensions; ++d, stride *= side)
+      if(k / stride % side > 0)
+        triplets.emplace_back(k, k - stride, -1.);
   }
   NP::Sparse_matrix lower(n, n);
   lower.setFromTriplets(triplets.begin(), triplets.end());
@@ -535,7 +538,7 @@ TEST(TwoColumnCholesky, OrdersByMetisOnlyWhereAmdFillsMuch)
 {
   namespace NP = SMP::internal::Norm_preserving;
   const std::pair<NP::Sparse_matrix, bool> cases[] = {{free_laplacian(np_test::load_mesh("bunny00")), false},
-                                                       {cube_grid_laplacian(30), true}};
+                                                       {grid_matrix(30, 3, 6.1), true}};
   for(const auto& [lower, metis] : cases)
   {
     const std::size_t n = std::size_t(lower.rows());
@@ -557,19 +560,7 @@ TEST(TwoColumnCholesky, OrdersByMetisOnlyWhereAmdFillsMuch)
 TEST(TwoColumnCholesky, RefusesAMatrixThatIsNotPositiveDefinite)
 {
   namespace NP = SMP::internal::Norm_preserving;
-  const int side = 200;
-  std::vector<Eigen::Triplet<double> > triplets;
-  for(int k = 0; k < side * side; ++k)
-  {
-    triplets.emplace_back(k, k, 3.);
-    if(k % side > 0) triplets.emplace_back(k, k - 1, -1.);
-    if(k >= side) triplets.emplace_back(k, k - side, -1.);
-  }
-  NP::Sparse_matrix square(side * side, side * side);
-  square.setFromTriplets(triplets.begin(), triplets.end());
-  NP::Sparse_matrix cube = cube_grid_laplacian(30);
-  cube.diagonal().setConstant(5.);
-  for(const NP::Sparse_matrix& indefinite : {square, cube})
+  for(const NP::Sparse_matrix& indefinite : {grid_matrix(200, 2, 3.), grid_matrix(30, 3, 5.)})
   {
     ASSERT_GE(std::size_t(indefinite.rows()), NP::cholmod_minimum_rows);
     NP::Two_column_cholesky cholesky;
@@ -583,7 +574,7 @@ TEST(TwoColumnCholesky, RefusesAMatrixThatIsNotPositiveDefinite)
 TEST(Threads, TheMetisOrderingWaitsForTheLock)
 {
   namespace NP = SMP::internal::Norm_preserving;
-  const NP::Sparse_matrix lower = cube_grid_laplacian(30);
+  const NP::Sparse_matrix lower = grid_matrix(30, 3, 6.1);
   std::atomic<bool> done(false), factored(false);
   std::unique_lock<std::mutex> held(NP::metis_mutex());
   std::thread worker([&] {
