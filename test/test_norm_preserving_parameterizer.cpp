@@ -453,6 +453,30 @@ TEST(TwoColumnCholesky, SolvesLikeEigenAndSplitsLargeFactors)
   }
 }
 
+// Where AMD's elimination tree holds most of the factor in one subtree (blade: a solve's
+// longest path holds about 90% of the factor), the factor is in a level-set dissection's
+// order, whose parts are balanced; where AMD's tree splits well (lion), in AMD's order. Both
+// solve to round-off.
+TEST(TwoColumnCholesky, DissectsWhereAmdSplitsUnevenly)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  for(const auto& [name, dissected] : {std::pair<std::string, bool>{"blade", true}, {"lion", false}})
+  {
+    const NP::Sparse_matrix lower = free_laplacian(np_test::load_mesh(name));
+    const std::size_t n = std::size_t(lower.rows());
+    ASSERT_LT(n, NP::cholmod_minimum_rows) << name;
+    const Eigen::SimplicialLLT<NP::Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > amd(lower);
+    const std::vector<int> amd_positions(amd.permutationP().indices().data(), amd.permutationP().indices().data() + n);
+    NP::Two_column_cholesky cholesky;
+    ASSERT_TRUE(cholesky.compute(lower)) << name;
+    EXPECT_EQ(cholesky.positions() != amd_positions, dissected) << name;
+    EXPECT_LT(cholesky.longest_path_share(), 0.6) << name;
+    const Eigen::MatrixXd b = two_right_hand_sides(lower.rows());
+    const Eigen::MatrixXd residual = lower.selfadjointView<Eigen::Lower>() * two_column_solve(cholesky, b) - b;
+    EXPECT_LT(residual.cwiseAbs().maxCoeff(), 1e-10 * b.cwiseAbs().maxCoeff()) << name;
+  }
+}
+
 // A dense matrix is one run of columns with the same rows: solved as one supernode (its
 // triangle; no rows below it) as Eigen's LDL' solves it; a mesh Laplacian has runs too, with
 // rows below them (their solve: SolvesLikeEigenAndSplitsLargeFactors).

@@ -8,7 +8,9 @@
 // (and than CHOLMOD's supernodal solve, whose BLAS calls are tiny for two columns). The
 // factorization itself is CHOLMOD's when the package is configured with CHOLMOD and the
 // matrix has at least 25,000 rows, converted to LL' in simplicial form; Eigen's SimplicialLLT
-// in AMD order otherwise (faster below that size). CHOLMOD orders with AMD, and with METIS (its
+// otherwise (faster below that size), in AMD's order or, where AMD's elimination tree would
+// leave most of a solve to one thread, a level-set dissection's (Level_set_dissection.h;
+// doc/performance.md, change 26). CHOLMOD orders with AMD, and with METIS (its
 // supernodal factorization) when AMD's factor would have `metis_fill_per_row` entries a row
 // or more: METIS's analysis takes 9-14 times as long as AMD's; the solves repay it where AMD
 // fills that much (METIS's factor is then 25-33% smaller), not below. The measurements behind
@@ -30,6 +32,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TWO_COLUMN_CHOLESKY_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TWO_COLUMN_CHOLESKY_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Level_set_dissection.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
@@ -61,7 +64,8 @@ public:
   bool compute(const Sparse_matrix& lower)
   {
     Two_column_cholesky result;
-    if(!result.factor(lower))
+    Tree_split split;
+    if(!result.factor(lower, split))
       return false;
     double work = 0;
     for(std::size_t j = 0; j < result.m_n; ++j)
@@ -70,7 +74,7 @@ public:
       work += count * count;
     }
     result.m_work_per_entry = work / double((std::max)(result.m_first[result.m_n], 1));
-    result.form_supernodes(result.split_into_parts());
+    result.form_supernodes(result.split_into_parts(split));
     *this = std::move(result);
     return true;
   }
@@ -127,11 +131,32 @@ public:
   // The number of columns solved on one thread (the top): all of them for a small factor.
   std::size_t sequential_columns() const { return m_top.size(); }
 
+  // The share of the factor's entries on the longest path of a solve: those of the top and of
+  // the most loaded part (all of them when the factor is not split).
+  double longest_path_share() const { return m_longest_path_share; }
+
   // The number of supernodes (runs of columns solved together): at most the number of rows.
   std::size_t supernode_count() const { return m_supernodes.size(); }
 
 private:
   static constexpr std::size_t part_count = 4;
+  static constexpr double dissection_smallest = 1 << 18, dissection_tried_above = 0.8, dissection_separators = 0.15,
+                          dissection_kept_below = 0.75, dissection_work_above = 1.1;
+  static constexpr int dissection_levels = 2; // into part_count pieces
+
+  // The cut of an elimination tree into the parts and the top: the largest subtree goes to the
+  // top (its root) and its children replace it, until the subtrees, dealt largest first to the
+  // least loaded part, load no part more than 10% over an even share, or the top would exceed
+  // 10% of the work. Factors of under `smallest_split` entries (meshes of up to ~700
+  // vertices) are all top: a part would take less time than handing it to another thread
+  // (doc/performance.md, change 12).
+  struct Tree_split
+  {
+    std::vector<char> in_top;
+    std::vector<int> part;          // of each column not in the top
+    double top = 0, heaviest = 0;   // the entries of the top and of the most loaded part
+  };
+  static constexpr double smallest_split = 1 << 14;
 
   struct Supernode
   {
@@ -140,12 +165,13 @@ private:
     std::size_t values;         // the triangle by columns, then each row's `width` entries
   };
 
-  bool factor(const Sparse_matrix& lower)
+  // Factors the matrix and splits the factor's elimination tree (split_tree()).
+  bool factor(const Sparse_matrix& lower, Tree_split& split)
   {
     m_n = std::size_t(lower.rows());
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
     if(m_n < cholmod_minimum_rows) // Eigen's factorization is faster at this size (performance.md, change 25)
-      return factor_simplicial(lower);
+      return factor_simplicial(lower, split);
     struct Cholmod // frees the factor and the workspace on every way out
     {
       cholmod_common common;
@@ -208,22 +234,105 @@ private:
     m_position.resize(m_n);
     for(std::size_t k = 0; k < m_n; ++k)
       m_position[std::size_t(permutation[k])] = int(k);
+    split = tree_split();
     return true;
 #else
-    return factor_simplicial(lower);
+    return factor_simplicial(lower, split);
 #endif
   }
-  // Eigen's simplicial factorization in AMD order.
-  bool factor_simplicial(const Sparse_matrix& lower)
+
+  // Eigen's simplicial LL' in `Ordering`'s order (AMD's, or NaturalOrdering for a matrix put in
+  // its order already), ordered, analyzed and factored in the steps of Eigen's compute(), its
+  // symbolic analysis read between them.
+  template <typename Ordering>
+  class Analyzed_llt : public Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Ordering>
   {
-    Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > llt(lower);
-    if(llt.info() != Eigen::Success)
+  public:
+    // Orders and analyzes the matrix of lower triangle `lower`. Returns the entries on the
+    // longest path of a solve: the top and the most loaded part of `split`.
+    double analyze(const Sparse_matrix& lower)
+    {
+      const std::size_t n = std::size_t(lower.rows());
+      this->ordering(lower, m_ordered_pointer, m_ordered);
+      this->analyzePattern_preordered(*m_ordered_pointer, false);
+      auto column = [&](std::size_t j) { return double(this->m_nonZerosPerCol[Eigen::Index(j)]) + 1.; }; // and the diagonal
+      entries = work = 0;
+      for(std::size_t j = 0; j < n; ++j)
+      {
+        entries += column(j);
+        work += column(j) * column(j);
+      }
+      split = split_tree(n, this->m_parent, column);
+      return split.top + split.heaviest;
+    }
+
+    // The numeric factorization, after analyze(); false if the matrix is not positive definite.
+    bool factor()
+    {
+      this->template factorize_preordered<false>(*m_ordered_pointer);
+      Sparse_matrix().swap(m_ordered);
+      return this->info() == Eigen::Success;
+    }
+
+    double entries = 0, work = 0; // of the factor, and the work of factoring (factorization_work_per_entry())
+    Tree_split split;
+
+  private:
+    Sparse_matrix m_ordered; // the matrix in its order (upper triangle)
+    const Sparse_matrix* m_ordered_pointer = nullptr;
+  };
+
+  // Eigen's simplicial factorization in AMD's order or, where AMD's elimination tree splits
+  // so unevenly that the longest path of a solve holds over `dissection_tried_above` of the
+  // factor, in a level-set dissection's when that path is then under `dissection_kept_below`
+  // of AMD's and the work of factoring under `dissection_work_above` times AMD's
+  // (doc/performance.md, change 26).
+  bool factor_simplicial(const Sparse_matrix& lower, Tree_split& split)
+  {
+    Analyzed_llt<Eigen::AMDOrdering<int> > by_amd;
+    const double path = by_amd.analyze(lower);
+    const int* amd_position = by_amd.permutationP().indices().data();
+    if(by_amd.entries >= dissection_smallest && path > dissection_tried_above * by_amd.entries)
+    {
+      std::vector<int> amd_order(m_n);
+      for(std::size_t i = 0; i < m_n; ++i)
+        amd_order[std::size_t(amd_position[i])] = int(i);
+      const Level_set_dissection::Result dissection =
+        Level_set_dissection::order(Sparse_matrix(lower.selfadjointView<Eigen::Lower>()), dissection_levels, amd_order);
+      if(dissection.separator_entries <= dissection_separators * by_amd.entries)
+      {
+        Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> position{int(m_n)};
+        for(std::size_t k = 0; k < m_n; ++k)
+          position.indices()[dissection.order[k]] = int(k);
+        Sparse_matrix permuted(lower.rows(), lower.cols());
+        permuted.selfadjointView<Eigen::Lower>() = lower.selfadjointView<Eigen::Lower>().twistedBy(position);
+        Analyzed_llt<Eigen::NaturalOrdering<int> > by_dissection;
+        if(by_dissection.analyze(permuted) < dissection_kept_below * path &&
+           by_dissection.work < dissection_work_above * by_amd.work)
+          return keep(by_dissection, position.indices(), split);
+      }
+    }
+    return keep(by_amd, by_amd.permutationP().indices(), split);
+  }
+
+  // Factors `llt` and keeps its factor, the position of each unknown and the tree's split.
+  template <typename Llt, typename Positions>
+  bool keep(Llt& llt, const Positions& position, Tree_split& split)
+  {
+    if(!llt.factor())
       return false;
-    const Sparse_matrix& factor = llt.matrixL().nestedExpression(); // diagonal first in each column
+    split = std::move(llt.split);
+    return take_factor(llt.matrixL().nestedExpression(), position);
+  }
+
+  // Keeps the factor (diagonal first in each column) and the position of each unknown.
+  template <typename Factor, typename Positions>
+  bool take_factor(const Factor& factor, const Positions& position)
+  {
     m_first.assign(factor.outerIndexPtr(), factor.outerIndexPtr() + m_n + 1);
     m_rows.assign(factor.innerIndexPtr(), factor.innerIndexPtr() + m_first[m_n]);
     m_values.assign(factor.valuePtr(), factor.valuePtr() + m_first[m_n]);
-    m_position.assign(llt.permutationP().indices().data(), llt.permutationP().indices().data() + m_n);
+    m_position.assign(position.data(), position.data() + m_n);
     return true;
   }
 
@@ -337,24 +446,15 @@ private:
     }
   }
 
-  // Cuts the elimination tree (parent: first row below the diagonal) into the parts and the
-  // top: the largest subtree goes to the top (its root) and its children replace it, until
-  // the subtrees, dealt largest first to the least loaded part, load no part more than 10%
-  // over an even share, or the top would exceed 10% of the work. Factors of under 2^14
-  // entries (meshes of up to ~700 vertices) are all top: a part would take less time than
-  // handing it to another thread (doc/performance.md, change 12).
-  // Returns the part of each column, `part_count` for the top.
-  std::vector<int> split_into_parts()
+  // The split of the tree of `n` columns given by each column's parent (-1 at a root; parents
+  // come later) and its entries (`entries(j)`).
+  template <typename Parents, typename Entries>
+  static Tree_split split_tree(std::size_t n, const Parents& parent, const Entries& entries)
   {
-    const std::size_t n = m_n;
-    std::vector<int> parent(n, -1);
-    std::vector<double> work(n);
+    std::vector<double> work(n); // of the subtree
     for(std::size_t j = 0; j < n; ++j)
     {
-      for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
-        if(parent[j] < 0 || m_rows[k] < parent[j])
-          parent[j] = m_rows[k];
-      work[j] += double(m_first[j + 1] - m_first[j]);
+      work[j] += entries(j);
       if(parent[j] >= 0)
         work[std::size_t(parent[j])] += work[j];
     }
@@ -365,18 +465,20 @@ private:
     std::partial_sum(child_first.begin(), child_first.end(), child_first.begin());
     std::vector<int> fill(child_first.begin(), child_first.end() - 1);
     std::vector<int> subtrees; // roots of the subtrees not in the top
+    double total = 0;
     for(std::size_t j = 0; j < n; ++j)
+    {
+      total += entries(j);
       if(parent[j] >= 0)
         children[std::size_t(fill[std::size_t(parent[j])]++)] = int(j);
       else
         subtrees.push_back(int(j));
+    }
 
-    const double total = double(m_first[n]);
-    const double minimum_work = 1 << 14; // below: all top, the pass on one thread
-    std::vector<char> in_top(n, char(total < minimum_work));
-    std::vector<int> bin(n, -1);
-    double top_work = 0;
-    while(total >= minimum_work) // ends: the top's cap comes before the subtrees run out
+    Tree_split split;
+    split.in_top.assign(n, char(total < smallest_split));
+    split.part.assign(n, -1);
+    while(total >= smallest_split) // ends: the top's cap comes before the subtrees run out
     {
       std::sort(subtrees.begin(), subtrees.end(), [&](int a, int b) {
         return work[std::size_t(a)] > work[std::size_t(b)] || (work[std::size_t(a)] == work[std::size_t(b)] && a < b);
@@ -386,22 +488,50 @@ private:
       {
         const std::size_t lightest = std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
         load[lightest] += work[std::size_t(r)];
-        bin[std::size_t(r)] = int(lightest);
+        split.part[std::size_t(r)] = int(lightest);
       }
       const double heaviest = *std::max_element(load.begin(), load.end());
       const std::size_t r = std::size_t(subtrees.front());
-      const double own = double(m_first[r + 1] - m_first[r]);
-      if(heaviest <= 1.1 * (total - top_work) / double(part_count) || top_work + own > 0.1 * total)
+      if(heaviest <= 1.1 * (total - split.top) / double(part_count) || split.top + entries(r) > 0.1 * total)
         break;
-      in_top[r] = 1;
-      top_work += own;
-      bin[r] = -1;
+      split.in_top[r] = 1;
+      split.top += entries(r);
+      split.part[r] = -1;
       subtrees.erase(subtrees.begin());
       subtrees.insert(subtrees.end(), children.begin() + child_first[r], children.begin() + child_first[r + 1]);
     }
+    std::array<double, part_count> load{};
     for(std::size_t j = n; j-- > 0;) // parents come later in the order
-      if(!in_top[j] && bin[j] < 0)
-        bin[j] = bin[std::size_t(parent[j])];
+      if(!split.in_top[j])
+      {
+        if(split.part[j] < 0)
+          split.part[j] = split.part[std::size_t(parent[j])];
+        load[std::size_t(split.part[j])] += entries(j);
+      }
+    split.top = total < smallest_split ? total : split.top;
+    split.heaviest = *std::max_element(load.begin(), load.end());
+    return split;
+  }
+
+  // split_tree() of the factor's elimination tree (parent: first row below the diagonal).
+  Tree_split tree_split() const
+  {
+    const std::size_t n = m_n;
+    std::vector<int> parent(n, -1);
+    for(std::size_t j = 0; j < n; ++j)
+      for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k) // the rows may come in any order
+        if(parent[j] < 0 || m_rows[std::size_t(k)] < parent[j])
+          parent[j] = m_rows[std::size_t(k)];
+    return split_tree(n, parent, [&](std::size_t j) { return double(m_first[j + 1] - m_first[j]); });
+  }
+
+  // Renumbers the rows in the top of the parts' columns to the parts' slots. Returns the part
+  // of each column, `part_count` for the top.
+  std::vector<int> split_into_parts(Tree_split& split)
+  {
+    const std::size_t n = m_n;
+    std::vector<char>& in_top = split.in_top;
+    const std::vector<int>& bin = split.part;
     // The tree was read off the factor's nonzeros: were an entry to cancel exactly, a row could
     // lie outside its column's part and top. Then all goes to the top.
     bool separate = true;
@@ -411,6 +541,7 @@ private:
           separate = separate && (in_top[std::size_t(m_rows[k])] || bin[std::size_t(m_rows[k])] == bin[j]);
     if(!separate)
       std::fill(in_top.begin(), in_top.end(), char(1));
+    m_longest_path_share = separate ? (split.top + split.heaviest) / double((std::max)(m_first[n], 1)) : 1.;
 
     // Rows in the top of a part's columns are renumbered to the part's slots.
     std::vector<int> top_index(n, -1);
@@ -494,6 +625,7 @@ private:
 
   std::size_t m_n = 0;
   double m_work_per_entry = 0;
+  double m_longest_path_share = 1;
   std::vector<int> m_first;         // the simplicial factor by columns, diagonal first, until
   std::vector<int> m_rows;          // form_supernodes() stores it by supernodes
   std::vector<double> m_values;
