@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Level_set_dissection.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Mesh_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_admm.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_feasible_projection.h>
@@ -506,7 +507,6 @@ TEST(TwoColumnCholesky, SolvesByRunsOfColumns)
   EXPECT_LT(cholesky.supernode_count(), std::size_t(laplacian.rows()) * 3 / 4);
 }
 
-#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
 // The lower triangle of the matrix of a grid of `side`^`dimensions` nodes with `diagonal` on
 // the diagonal and -1 between neighbours. In 3D with 6.1 (the Laplacian plus 0.1 times the
 // identity), a matrix that AMD fills with hundreds of entries a row (a mesh's Laplacian: 20-70).
@@ -529,6 +529,62 @@ SMP::internal::Norm_preserving::Sparse_matrix grid_matrix(int side, int dimensio
   return lower;
 }
 
+// A level-set dissection of a grid, and of two grids apart (a piece whose breadth-first
+// search does not reach it all: there the separator is empty), is an order of every vertex
+// whose separator (one level: the last vertices, as many as its clique's entries say) leaves
+// two sides of at least 40% of the vertices that no edge joins: a search from the first
+// vertex, around the separator, reaches one side only.
+TEST(LevelSetDissection, SeparatesAndOrdersEveryVertex)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  const NP::Sparse_matrix grid = grid_matrix(60, 2, 4.);
+  NP::Sparse_matrix apart(2 * grid.rows(), 2 * grid.rows());
+  std::vector<Eigen::Triplet<double> > blocks;
+  for(int k = 0; k < grid.outerSize(); ++k)
+    for(NP::Sparse_matrix::InnerIterator it(grid, k); it; ++it)
+      for(int b = 0; b < 2; ++b)
+        blocks.emplace_back(int(it.row()) + b * int(grid.rows()), int(it.col()) + b * int(grid.rows()), it.value());
+  apart.setFromTriplets(blocks.begin(), blocks.end());
+  for(const NP::Sparse_matrix& lower : {grid, apart})
+  {
+    const NP::Sparse_matrix pattern = lower.selfadjointView<Eigen::Lower>();
+    const std::size_t n = std::size_t(pattern.rows());
+    std::vector<int> identity(n);
+    std::iota(identity.begin(), identity.end(), 0);
+    const NP::Level_set_dissection::Result dissection = NP::Level_set_dissection::order(pattern, 1, identity);
+    std::vector<int> sorted(dissection.order);
+    std::sort(sorted.begin(), sorted.end());
+    ASSERT_TRUE(sorted == identity) << n << " rows: not an order of every vertex";
+    const std::size_t width = std::size_t(std::lround((std::sqrt(8 * dissection.separator_entries + 1) - 1) / 2));
+    std::vector<char> reached(n, 0);
+    for(std::size_t k = n - width; k < n; ++k)
+      reached[std::size_t(dissection.order[k])] = 1; // the separator: never entered
+    std::vector<int> queue(1, dissection.order[0]);
+    reached[std::size_t(queue[0])] = 1;
+    for(std::size_t h = 0; h < queue.size(); ++h)
+      for(NP::Sparse_matrix::InnerIterator it(pattern, queue[h]); it; ++it)
+        if(!reached[std::size_t(it.index())])
+        {
+          reached[std::size_t(it.index())] = 1;
+          queue.push_back(int(it.index()));
+        }
+    EXPECT_GE(double(queue.size()), 0.4 * double(n)) << n << " rows";
+    EXPECT_GE(double(n - width - queue.size()), 0.4 * double(n)) << n << " rows: the separator does not separate";
+  }
+}
+
+// A matrix that is not positive definite is refused in Eigen's factorization too (below
+// CHOLMOD's size, or in a build without CHOLMOD): a 100 x 100 grid with 3 on the diagonal.
+TEST(TwoColumnCholesky, RefusesAnIndefiniteMatrixOfEigensSize)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  const NP::Sparse_matrix indefinite = grid_matrix(100, 2, 3.);
+  ASSERT_LT(std::size_t(indefinite.rows()), NP::cholmod_minimum_rows);
+  NP::Two_column_cholesky cholesky;
+  EXPECT_FALSE(cholesky.compute(indefinite));
+}
+
+#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
 // CHOLMOD's analysis of `lower` by one ordering: the position of each unknown in its order,
 // and the entries of its factor.
 std::pair<std::vector<int>, double> cholmod_order(const SMP::internal::Norm_preserving::Sparse_matrix& lower,

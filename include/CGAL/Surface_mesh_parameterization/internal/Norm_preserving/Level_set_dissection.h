@@ -3,24 +3,25 @@
 //
 // A fill-reducing elimination order whose elimination tree splits into balanced subtrees:
 // nested dissection by breadth-first level sets for the first levels, the pieces in AMD's
-// order.
-// AMD alone orders many mesh Laplacians so that one subtree of the tree holds most of the
-// factor (90% on mushroom subdivided once), and the triangular solves, run on one thread per
-// subtree (Two_column_cholesky.h), then run on one thread. Dissection puts a separator last:
-// the vertices of the level, counted from a pseudo-peripheral vertex, that splits the piece
-// most evenly with the fewest vertices (at least 40% on each side), less those with no
-// neighbour beyond it (they go to the near side). The levels of a breadth-first search are
-// only joined by edges between consecutive levels, so the two sides share no edge and their
-// subtrees are disjoint (doc/performance.md, change 26).
+// order. AMD alone orders some mesh Laplacians so that one subtree of the tree holds most of
+// the factor (90% on mushroom subdivided once), and the triangular solves, run on one thread
+// per part of the tree (Two_column_cholesky.h), then run mostly on one thread. Dissection
+// puts a separator last: among the levels of a breadth-first search from a pseudo-peripheral
+// vertex that leave at least `least_side` of the piece on each side, the one of fewest
+// vertices, less those with no neighbour in the next level (they go to the near side). The
+// levels of a breadth-first search are only joined by edges between consecutive levels, so
+// the two sides share no edge and their subtrees are disjoint (doc/performance.md, change 26).
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_LEVEL_SET_DISSECTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_LEVEL_SET_DISSECTION_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -35,7 +36,7 @@ public:
   {
     std::vector<int> order;         // the k-th unknown eliminated at k
     // The entries the separators' columns would have in the factor if each separator were a
-    // clique joined to the separators around it: the least the factor's last columns hold.
+    // clique joined to the separators around it: at most what those columns hold.
     double separator_entries = 0;
   };
 
@@ -45,6 +46,7 @@ public:
   static Result order(const Sparse_matrix& pattern, int levels, const std::vector<int>& fill_reducing)
   {
     const std::size_t n = fill_reducing.size();
+    CGAL_precondition(n == std::size_t(pattern.rows()));
     Level_set_dissection d(pattern);
     std::vector<int> all(n);
     for(std::size_t i = 0; i < n; ++i)
@@ -58,12 +60,14 @@ public:
     d.m_result.order.resize(n);
     for(int v : fill_reducing)
       d.m_result.order[next[std::size_t(d.m_piece[std::size_t(v)])]++] = v;
-    return d.m_result;
+    return std::move(d.m_result);
   }
 
 private:
-  // Pieces smaller than this are not dissected.
+  // Pieces smaller than this are not dissected; a separator leaves at least this share of the
+  // piece on each side.
   static constexpr std::size_t smallest_dissected = 200;
+  static constexpr double least_side = 0.4;
 
   explicit Level_set_dissection(const Sparse_matrix& pattern)
     : m_pattern(pattern), m_stamp(std::size_t(pattern.rows()), 0), m_level(std::size_t(pattern.rows()), -1),
@@ -119,7 +123,7 @@ private:
     for(int l = 0; l <= deepest; ++l)
     {
       const std::size_t above = piece.size() - below - count[std::size_t(l)];
-      if(double(below) >= 0.4 * size && double(above) >= 0.4 * size &&
+      if(double(below) >= least_side * size && double(above) >= least_side * size &&
          (separator < 0 || count[std::size_t(l)] < count[std::size_t(separator)]))
         separator = l;
       below += count[std::size_t(l)];
@@ -130,10 +134,17 @@ private:
     for(int v : piece)
     {
       const int l = m_level[std::size_t(v)];
-      bool beyond = false; // a neighbour on the far side
+      bool beyond = false; // a neighbour in the next level
       if(l == separator)
-        for_neighbours(v, [&](int j) { beyond = beyond || (m_stamp[std::size_t(j)] == s && m_level[std::size_t(j)] == l + 1); });
-      (l >= 0 && (l < separator || (l == separator && !beyond)) ? near : l == separator ? middle : far).push_back(v);
+        for_neighbours(v, [&](int j) {
+          beyond = beyond || (m_stamp[std::size_t(j)] == s && m_level[std::size_t(j)] == l + 1);
+        });
+      if(l == separator && beyond)
+        middle.push_back(v);
+      else if(l >= 0 && l <= separator)
+        near.push_back(v);
+      else // beyond the separator, or not reached
+        far.push_back(v);
     }
     const double width = double(middle.size());
     m_result.separator_entries += width * (width + 1) / 2 + width * double(around);

@@ -32,6 +32,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TWO_COLUMN_CHOLESKY_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TWO_COLUMN_CHOLESKY_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Level_set_dissection.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
@@ -74,7 +75,7 @@ public:
       work += count * count;
     }
     result.m_work_per_entry = work / double((std::max)(result.m_first[result.m_n], 1));
-    result.form_supernodes(result.split_into_parts(split));
+    result.form_supernodes(result.apply_split(split));
     *this = std::move(result);
     return true;
   }
@@ -140,23 +141,27 @@ public:
 
 private:
   static constexpr std::size_t part_count = 4;
-  static constexpr double dissection_smallest = 1 << 18, dissection_tried_above = 0.8, dissection_separators = 0.15,
-                          dissection_kept_below = 0.75, dissection_work_above = 1.1;
-  static constexpr int dissection_levels = 2; // into part_count pieces
+  // The dissection (factor_simplicial()): tried on a factor of at least
+  // `dissection_smallest_factor` entries whose longest path holds over
+  // `dissection_tried_above` of them, kept when its separators hold at most
+  // `dissection_separators` of AMD's entries, its longest path under `dissection_kept_below`
+  // of AMD's and its factoring work under `dissection_most_work` times AMD's.
+  static constexpr double dissection_smallest_factor = 1 << 18, dissection_tried_above = 0.8,
+                          dissection_separators = 0.15, dissection_kept_below = 0.75, dissection_most_work = 1.1;
+  static constexpr int dissection_levels = 2;
+  static_assert((std::size_t(1) << dissection_levels) == part_count, "a piece for each part");
 
-  // The cut of an elimination tree into the parts and the top: the largest subtree goes to the
-  // top (its root) and its children replace it, until the subtrees, dealt largest first to the
-  // least loaded part, load no part more than 10% over an even share, or the top would exceed
-  // 10% of the work. Factors of under `smallest_split` entries (meshes of up to ~700
-  // vertices) are all top: a part would take less time than handing it to another thread
-  // (doc/performance.md, change 12).
+  // The cut of an elimination tree into the parts and the top (split_tree()).
   struct Tree_split
   {
     std::vector<char> in_top;
     std::vector<int> part;          // of each column not in the top
     double top = 0, heaviest = 0;   // the entries of the top and of the most loaded part
   };
+  // Factors of fewer entries are all top (split_tree()).
   static constexpr double smallest_split = 1 << 14;
+  // A part may be this much over an even share of the work; the top may hold this share of it.
+  static constexpr double part_slack = 1.1, top_share = 0.1;
 
   struct Supernode
   {
@@ -253,8 +258,14 @@ private:
     double analyze(const Sparse_matrix& lower)
     {
       const std::size_t n = std::size_t(lower.rows());
-      this->ordering(lower, m_ordered_pointer, m_ordered);
-      this->analyzePattern_preordered(*m_ordered_pointer, false);
+      const Sparse_matrix* ordered = nullptr; // Eigen's ordering step puts a lower triangle in m_ordered
+#if EIGEN_VERSION_AT_LEAST(3, 4, 90) // a flag for non-Hermitian matrices from then on
+      this->template ordering<false>(lower, ordered, m_ordered);
+#else
+      this->ordering(lower, ordered, m_ordered);
+#endif
+      CGAL_assertion(ordered == &m_ordered);
+      this->analyzePattern_preordered(m_ordered, false);
       auto column = [&](std::size_t j) { return double(this->m_nonZerosPerCol[Eigen::Index(j)]) + 1.; }; // and the diagonal
       entries = work = 0;
       for(std::size_t j = 0; j < n; ++j)
@@ -269,7 +280,11 @@ private:
     // The numeric factorization, after analyze(); false if the matrix is not positive definite.
     bool factor()
     {
-      this->template factorize_preordered<false>(*m_ordered_pointer);
+#if EIGEN_VERSION_AT_LEAST(3, 4, 90)
+      this->template factorize_preordered<false, false>(m_ordered);
+#else
+      this->template factorize_preordered<false>(m_ordered);
+#endif
       Sparse_matrix().swap(m_ordered);
       return this->info() == Eigen::Success;
     }
@@ -279,20 +294,19 @@ private:
 
   private:
     Sparse_matrix m_ordered; // the matrix in its order (upper triangle)
-    const Sparse_matrix* m_ordered_pointer = nullptr;
   };
 
-  // Eigen's simplicial factorization in AMD's order or, where AMD's elimination tree splits
-  // so unevenly that the longest path of a solve holds over `dissection_tried_above` of the
-  // factor, in a level-set dissection's when that path is then under `dissection_kept_below`
-  // of AMD's and the work of factoring under `dissection_work_above` times AMD's
-  // (doc/performance.md, change 26).
+  // Eigen's simplicial factorization in AMD's order or, below 25,000 rows where AMD's
+  // elimination tree splits so unevenly that the longest path of a solve holds most of the
+  // factor, in a level-set dissection's (the conditions: `dissection_tried_above` and the
+  // constants with it; doc/performance.md, change 26).
   bool factor_simplicial(const Sparse_matrix& lower, Tree_split& split)
   {
     Analyzed_llt<Eigen::AMDOrdering<int> > by_amd;
     const double path = by_amd.analyze(lower);
     const int* amd_position = by_amd.permutationP().indices().data();
-    if(by_amd.entries >= dissection_smallest && path > dissection_tried_above * by_amd.entries)
+    if(m_n < cholmod_minimum_rows && by_amd.entries >= dissection_smallest_factor &&
+       path > dissection_tried_above * by_amd.entries)
     {
       std::vector<int> amd_order(m_n);
       for(std::size_t i = 0; i < m_n; ++i)
@@ -308,27 +322,22 @@ private:
         permuted.selfadjointView<Eigen::Lower>() = lower.selfadjointView<Eigen::Lower>().twistedBy(position);
         Analyzed_llt<Eigen::NaturalOrdering<int> > by_dissection;
         if(by_dissection.analyze(permuted) < dissection_kept_below * path &&
-           by_dissection.work < dissection_work_above * by_amd.work)
+           by_dissection.work < dissection_most_work * by_amd.work)
           return keep(by_dissection, position.indices(), split);
       }
     }
     return keep(by_amd, by_amd.permutationP().indices(), split);
   }
 
-  // Factors `llt` and keeps its factor, the position of each unknown and the tree's split.
+  // Factors `llt` and keeps its factor (diagonal first in each column), the position of each
+  // unknown and the tree's split.
   template <typename Llt, typename Positions>
   bool keep(Llt& llt, const Positions& position, Tree_split& split)
   {
     if(!llt.factor())
       return false;
     split = std::move(llt.split);
-    return take_factor(llt.matrixL().nestedExpression(), position);
-  }
-
-  // Keeps the factor (diagonal first in each column) and the position of each unknown.
-  template <typename Factor, typename Positions>
-  bool take_factor(const Factor& factor, const Positions& position)
-  {
+    const Sparse_matrix& factor = llt.matrixL().nestedExpression();
     m_first.assign(factor.outerIndexPtr(), factor.outerIndexPtr() + m_n + 1);
     m_rows.assign(factor.innerIndexPtr(), factor.innerIndexPtr() + m_first[m_n]);
     m_values.assign(factor.valuePtr(), factor.valuePtr() + m_first[m_n]);
@@ -447,7 +456,12 @@ private:
   }
 
   // The split of the tree of `n` columns given by each column's parent (-1 at a root; parents
-  // come later) and its entries (`entries(j)`).
+  // come later) and its entries (`entries(j)`): the largest subtree goes to the top (its root)
+  // and its children replace it, until the subtrees, dealt largest first to the least loaded
+  // part, load no part more than `part_slack` times an even share, or the top would exceed
+  // `top_share` of the work. Factors of under `smallest_split` entries (meshes of up to ~700
+  // vertices) are all top: a part would take less time than handing it to another thread
+  // (doc/performance.md, change 12).
   template <typename Parents, typename Entries>
   static Tree_split split_tree(std::size_t n, const Parents& parent, const Entries& entries)
   {
@@ -492,7 +506,7 @@ private:
       }
       const double heaviest = *std::max_element(load.begin(), load.end());
       const std::size_t r = std::size_t(subtrees.front());
-      if(heaviest <= 1.1 * (total - split.top) / double(part_count) || split.top + entries(r) > 0.1 * total)
+      if(heaviest <= part_slack * (total - split.top) / double(part_count) || split.top + entries(r) > top_share * total)
         break;
       split.in_top[r] = 1;
       split.top += entries(r);
@@ -525,9 +539,10 @@ private:
     return split_tree(n, parent, [&](std::size_t j) { return double(m_first[j + 1] - m_first[j]); });
   }
 
-  // Renumbers the rows in the top of the parts' columns to the parts' slots. Returns the part
+  // Applies the split: renumbers the rows in the top of the parts' columns to the parts' slots
+  // (or puts all in the top, see below) and records the longest path's share. Returns the part
   // of each column, `part_count` for the top.
-  std::vector<int> split_into_parts(Tree_split& split)
+  std::vector<int> apply_split(Tree_split& split)
   {
     const std::size_t n = m_n;
     std::vector<char>& in_top = split.in_top;
