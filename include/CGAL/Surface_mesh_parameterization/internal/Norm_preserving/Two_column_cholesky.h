@@ -258,7 +258,7 @@ private:
     double analyze(const Sparse_matrix& lower)
     {
       const std::size_t n = std::size_t(lower.rows());
-      const Sparse_matrix* ordered = nullptr; // Eigen's ordering step puts a lower triangle in m_ordered
+      const Sparse_matrix* ordered = nullptr; // the step fills m_ordered, given a lower triangle
 #if EIGEN_VERSION_AT_LEAST(3, 4, 90) // a flag for non-Hermitian matrices from then on
       this->template ordering<false>(lower, ordered, m_ordered);
 #else
