@@ -304,13 +304,11 @@ private:
   {
     Analyzed_llt<Eigen::AMDOrdering<int> > by_amd;
     const double path = by_amd.analyze(lower);
-    const int* amd_position = by_amd.permutationP().indices().data();
     if(m_n < cholmod_minimum_rows && by_amd.entries >= dissection_smallest_factor &&
        path > dissection_tried_above * by_amd.entries)
     {
-      std::vector<int> amd_order(m_n);
-      for(std::size_t i = 0; i < m_n; ++i)
-        amd_order[std::size_t(amd_position[i])] = int(i);
+      const int* amd = by_amd.permutationPinv().indices().data(); // the k-th unknown eliminated at k
+      const std::vector<int> amd_order(amd, amd + m_n);
       const Level_set_dissection::Result dissection =
         Level_set_dissection::order(Sparse_matrix(lower.selfadjointView<Eigen::Lower>()), dissection_levels, amd_order);
       if(dissection.separator_entries <= dissection_separators * by_amd.entries)
