@@ -104,6 +104,10 @@ public:
         report.status = NORM_PRESERVING_SOLVER_TIME_LIMIT;
         report.message = "time limit reached before the tolerance";
         break;
+      case NP::Admm_outcome::PRECISION_LIMIT:
+        report.status = NORM_PRESERVING_SOLVER_PRECISION_LIMIT;
+        report.message = "the certified gap stopped above the tolerance at an optimal point (floating-point precision)";
+        break;
       case NP::Admm_outcome::FACTORIZATION_FAILED:
         report.message = "the graph Laplacian could not be factored";
         return false;

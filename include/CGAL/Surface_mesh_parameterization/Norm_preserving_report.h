@@ -25,6 +25,10 @@ enum Norm_preserving_solver_status
   NORM_PRESERVING_SOLVER_CONVERGED,       ///< the tolerance was met
   NORM_PRESERVING_SOLVER_ITERATION_LIMIT, ///< the iteration limit was hit: the best feasible point found is returned
   NORM_PRESERVING_SOLVER_TIME_LIMIT,      ///< the time limit was hit: the best feasible point found is returned
+  /// the certified mode found a point that satisfies the optimality (KKT) conditions to
+  /// round-off, but its certified gap, limited by the floating-point precision of the bound,
+  /// is above the tolerance: that point is returned with the gap it has
+  NORM_PRESERVING_SOLVER_PRECISION_LIMIT,
   NORM_PRESERVING_SOLVER_FAILED           ///< no solution (the uv map is left untouched)
 };
 

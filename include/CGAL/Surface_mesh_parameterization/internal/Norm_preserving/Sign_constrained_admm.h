@@ -18,14 +18,17 @@
 // is close to geometric: the rule stops when the decrease still to come, extrapolated from the
 // last two decreases (d2 r / (1 - r), r = d2 / d1), is at most the tolerance times f (or the
 // gap's floor, Dual_bound.h, near a zero optimum) at two checks in a row (doc/performance.md,
-// change 7; doc/decisions.md). On a slow tail the default mode tries the polish described below
-// as well: from iteration 150 (later on a mesh whose factorization costs more per entry of its
-// factor), then each time the iteration count has doubled, three times at most; a try that
-// certifies the tolerance ends the solve (doc/performance.md, change 15). A tail that has not
-// settled by iteration 1,000 (dense tubes seen end-on by the guess crept to the iteration
-// limit) is handed to the interior point on a mesh of up to 200,000 vertices, within the time
-// limit, and the polish then tries to certify its point (doc/performance.md, change 24). The
-// returned point is the last feasible one, so it satisfies every constraint exactly, and its
+// change 7; doc/decisions.md), and the certified gap then confirms it: at most
+// `confirmed_gap_ratio` times the tolerance (change 27). On a slow tail the default mode tries
+// the polish described below as well: from iteration 150 (later on a mesh whose factorization
+// costs more per entry of its factor), then each time the iteration count has doubled, three
+// times at most; a try that certifies the tolerance ends the solve (doc/performance.md, change
+// 15). A tail that has not settled by iteration 1,000 (dense tubes seen end-on by the guess
+// crept to the iteration limit) is handed to the interior point on a mesh of up to 200,000
+// vertices, within the time limit, and the polish then tries to certify its point
+// (doc/performance.md, change 24); in the certified mode also a tail whose polish tries below
+// have all failed short of a KKT point (change 27). The returned point is the last feasible
+// one (or the polish's), so it satisfies every constraint exactly, and its
 // distance to the optimum is certified by a dual bound from the multipliers (Dual_bound.h).
 // In the certified mode the solve goes on until that certificate itself is at most the
 // tolerance: from the point where the default rule would stop, the bound is computed every 25
@@ -36,7 +39,9 @@
 // constraints violated, or of negative multiplier, beyond round-off, and fewer at a time once
 // the corrections stop shrinking: it settles at the default's stopping point on 34 of the 35
 // benchmark meshes of up to 50,000 vertices, and on cow x3 (doc/performance.md, changes 8 and
-// 9).
+// 9). A try that ends at a KKT point (no constraint left to turn) whose gap, limited by the
+// bound's rounding on a tiny optimum, stays above the tolerance is kept: when the tries are
+// over, the solve ends at the one of least gap (a precision limit; change 27).
 //
 // Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
 // edge loops run in blocks of edges, the right-hand side is gathered per free vertex
@@ -92,13 +97,19 @@ constexpr double admm_default_tolerance = 2.5e-5; // of Norm_preserving_ADMM_sol
 constexpr int polish_default_minimum = 150;
 constexpr double polish_default_factor = 5;
 constexpr int polish_default_tries = 3, polish_certified_tries = 5;
-// The default mode hands a tail that has not settled by iteration `interior_point_after` to
-// the interior point, on a mesh of at most `interior_point_max_vertices` vertices (it needs
-// about 6 KB a vertex), then polishes its point on the constraints whose value is at most
-// `interior_point_active_value` (doc/performance.md, change 24).
+// A tail that has not settled by iteration `interior_point_after` (in the certified mode also
+// one whose polish tries have failed by then) is handed to the interior point, on a mesh of at
+// most `interior_point_max_vertices` vertices (it needs about 6 KB a vertex), whose point is
+// then polished on the constraints of value at most `interior_point_active_value`
+// (doc/performance.md, changes 24 and 27).
 constexpr int interior_point_after = 1000;
 constexpr std::size_t interior_point_max_vertices = 200000;
 constexpr double interior_point_active_value = 1e-6;
+// The default mode's stop needs its certified gap at most `confirmed_gap_ratio` times the
+// tolerance: at the rule's stops on the benchmark meshes the gap is at most 91 times the
+// tolerance; a larger one means the extrapolation was fooled (a fast first drop, then a slow
+// tail), and the iterations go on.
+constexpr double confirmed_gap_ratio = 200;
 constexpr double polish_turn_tolerance = 1e-9;
 constexpr int polish_rounds = 24;
 constexpr double polish_shrink = 0.7;
@@ -112,7 +123,7 @@ struct Admm_settings
   bool certified;    // stop on the certified gap, not on the extrapolation
 };
 
-enum class Admm_outcome { CONVERGED, ITERATION_LIMIT, TIME_LIMIT, FACTORIZATION_FAILED };
+enum class Admm_outcome { CONVERGED, ITERATION_LIMIT, TIME_LIMIT, PRECISION_LIMIT, FACTORIZATION_FAILED };
 
 struct Admm_result
 {
@@ -173,6 +184,9 @@ public:
     m_old = objective;
     return m_passed >= 2;
   }
+
+  // forgets the checks passed (a stop the certificate did not confirm).
+  void restart() { m_passed = 0; }
 
 private:
   double m_tolerance, m_floor;
@@ -270,6 +284,10 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     next_polish = first < 1e9 ? int(first) : std::numeric_limits<int>::max();
   }
   bool gap_is_current = false; // result.gap is that of `feasible`
+  // The certified mode: the polished point of least gap among those that satisfy the KKT
+  // conditions to round-off (no constraint to turn) without certifying the tolerance.
+  UV_vector kkt_point;
+  double kkt_gap = std::numeric_limits<double>::infinity();
   auto multipliers = [&]() { // of the constraints a, b >= 0, from the scaled ones
     std::vector<std::array<double, 2> > y(w);
     for(auto& v : y)
@@ -326,6 +344,11 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
           if(amount > polish_turn_tolerance)
             wrong.emplace_back(-amount, 2 * e + std::size_t(c));
         }
+      }
+      if(wrong.empty() && settings.certified && gap < kkt_gap)
+      {
+        kkt_point.swap(projected);
+        kkt_gap = gap;
       }
       fewest = (std::min)(fewest, wrong.size());
       if(wrong.empty() || wrong.size() > polish_growth_limit * fewest + polish_growth_slack)
@@ -439,8 +462,15 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     settled = stop.settled(objective) || (settled && settings.certified);
     if(settled && !settings.certified)
     {
-      result.outcome = Admm_outcome::CONVERGED;
-      break;
+      result.gap = relative_gap(objective, dual_bound(), scale);
+      gap_is_current = true;
+      if(result.gap <= confirmed_gap_ratio * settings.tolerance)
+      {
+        result.outcome = Admm_outcome::CONVERGED;
+        break;
+      }
+      settled = false;
+      stop.restart();
     }
     if(!settings.certified && k >= next_polish && polishes_left > 0)
     {
@@ -452,11 +482,11 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
         break;
       }
     }
-    if(!settings.certified && k >= interior_point_after && !interior_point_tried && n <= interior_point_max_vertices &&
-       seconds_since(begin) <= settings.time_limit)
+    if(k >= interior_point_after && !interior_point_tried && n <= interior_point_max_vertices &&
+       (!settled || (polishes_left == 0 && kkt_point.empty())) && seconds_since(begin) <= settings.time_limit)
     {
       interior_point_tried = true;
-      if(interior_point())
+      if(interior_point() && (!settings.certified || result.gap <= settings.tolerance))
       {
         result.outcome = Admm_outcome::CONVERGED;
         break;
@@ -480,6 +510,11 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
         break;
       }
     }
+    if(polishes_left == 0 && !kkt_point.empty())
+    {
+      result.outcome = Admm_outcome::PRECISION_LIMIT;
+      break;
+    }
     if(seconds_since(begin) > settings.time_limit)
     {
       result.outcome = Admm_outcome::TIME_LIMIT;
@@ -493,6 +528,11 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   }
   if(!gap_is_current)
     result.gap = relative_gap(objective, dual_bound(), scale);
+  if(kkt_gap < result.gap)
+  {
+    feasible.swap(kkt_point);
+    result.gap = kkt_gap;
+  }
   uv = feasible;
   if(state)
   {
