@@ -33,16 +33,22 @@ namespace Surface_mesh_parameterization {
 /// Two modes:
 /// - by default, the solve stops when the decrease of the objective still to come,
 ///   extrapolated from the last iterations, is at most `tolerance` (relative to the
-///   objective, or near a zero optimum to 1e-12 times the objective of the zero map); a solve
-///   that has not stopped by iteration 1,000, on a mesh of at most 200,000 vertices and within
-///   the time limit, is finished by the interior point (`Interior_point_quadratic_program_traits`,
-///   within what is left of the time limit), whose point the exact mode's active-set optimum
-///   then certifies within `tolerance` when it can (otherwise the reported bound is looser);
-/// - `certified()`, the exact mode: the solve stops only when the certified gap is at most
+///   objective, or near a zero optimum to 1e-12 times the objective of the zero map) and the
+///   certified gap at most 200 times `tolerance`; a solve that has not stopped by iteration
+///   1,000, on a mesh of at most 200,000 vertices and within the time limit, is finished by
+///   the interior point (`Interior_point_quadratic_program_traits`, within what is left of the
+///   time limit), whose point the exact mode's active-set optimum then certifies within
+///   `tolerance` when it can (otherwise the reported bound is looser);
+/// - `certified()`, the exact mode: the solve stops when the certified gap is at most
 ///   `tolerance` (default 1e-9); from where the default would stop, it also tries the exact
 ///   optimum on the set of constraints the iterations have made active, corrected a few
 ///   times, which certifies there on 34 of the 35 benchmark meshes of up to 50,000 vertices
-///   (from 150,000 vertices on, the interior point is faster: doc/benchmarks.md).
+///   (from 150,000 vertices on, the interior point is faster: doc/benchmarks.md); a tail not
+///   settled by iteration 1,000, or whose tries are over by then without ending at the
+///   optimum, goes to the interior point as in the default mode. Where the optimum is a tiny share of the zero map's
+///   objective, the bound's rounding can keep the gap of the optimum itself above `tolerance`:
+///   the solve then ends at the optimality (KKT) point of least gap its tries found, with
+///   `NORM_PRESERVING_SOLVER_PRECISION_LIMIT` (its iterations and residuals are the ADMM's).
 ///
 /// With the default time limit (none) the result depends on the input only, bit for bit.
 ///
@@ -55,9 +61,10 @@ public:
   typedef internal::Norm_preserving::Admm_state State;
 
   /// creates a solver that stops when the extrapolated remaining decrease of the objective is
-  /// at most `tolerance` times the objective, or after `max_iterations` iterations or
-  /// `time_limit` seconds. The default puts the objective within 1e-4 of the optimum on the
-  /// test suite and the benchmark meshes (doc/benchmarks.md).
+  /// at most `tolerance` times the objective (and the certified gap at most 200 times
+  /// `tolerance`), or after `max_iterations` iterations or `time_limit` seconds. The default
+  /// puts the objective within 1e-4 of the optimum on the test suite and the benchmark meshes
+  /// (doc/benchmarks.md).
   explicit Norm_preserving_ADMM_solver(double tolerance = internal::Norm_preserving::admm_default_tolerance,
                                        int max_iterations = 20000,
                                        double time_limit = std::numeric_limits<double>::infinity())
@@ -65,7 +72,9 @@ public:
   { }
 
   /// the exact mode: a solver that stops when its certified gap to the optimum (relative) is
-  /// at most `gap`, or after `max_iterations` iterations or `time_limit` seconds.
+  /// at most `gap`, at an optimality (KKT) point whose gap the bound's rounding keeps above
+  /// `gap` (`NORM_PRESERVING_SOLVER_PRECISION_LIMIT`), or after `max_iterations` iterations or
+  /// `time_limit` seconds.
   static Norm_preserving_ADMM_solver certified(double gap = 1e-9, int max_iterations = 200000,
                                                double time_limit = std::numeric_limits<double>::infinity())
   {

@@ -27,7 +27,7 @@ enum Norm_preserving_solver_status
   NORM_PRESERVING_SOLVER_TIME_LIMIT,      ///< the time limit was hit: the best feasible point found is returned
   /// the certified mode found a point that satisfies the optimality (KKT) conditions to
   /// round-off, but its certified gap, limited by the floating-point precision of the bound,
-  /// is above the tolerance: that point is returned with the gap it has
+  /// is above the tolerance: the point of least gap found is returned with that gap
   NORM_PRESERVING_SOLVER_PRECISION_LIMIT,
   NORM_PRESERVING_SOLVER_FAILED           ///< no solution (the uv map is left untouched)
 };
@@ -68,8 +68,8 @@ struct Norm_preserving_report
   double max_constraint_violation = 0; ///< largest violation of a sign constraint (of the final signs), at the same point
   std::size_t active_constraints = 0;  ///< sign constraints at equality (within 1e-8 mean edge length), at the same point
   std::size_t constraints = 0;         ///< sign constraints, two per edge
-  /// how the QP solver ended: on an iteration or time limit the uvs are the best feasible
-  /// point it found, and `warning` says so
+  /// how the QP solver ended: on an iteration, time or precision limit the uvs are the best
+  /// feasible point it found, and `warning` says so
   Norm_preserving_solver_status solver_status = NORM_PRESERVING_SOLVER_FAILED;
   bool has_solver_statistics = false;  ///< whether the solver reported the two fields below
   int solver_iterations = 0;           ///< iterations of the QP solver

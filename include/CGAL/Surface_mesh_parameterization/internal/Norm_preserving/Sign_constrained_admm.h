@@ -27,8 +27,8 @@
 // crept to the iteration limit) is handed to the interior point on a mesh of up to 200,000
 // vertices, within the time limit, and the polish then tries to certify its point
 // (doc/performance.md, change 24); in the certified mode also a tail whose polish tries below
-// have all failed short of a KKT point (change 27). The returned point is the last feasible
-// one (or the polish's), so it satisfies every constraint exactly, and its
+// are over by then, short of the precision limit (change 27). The returned point is the last
+// feasible one (or the polish's), so it satisfies every constraint exactly, and its
 // distance to the optimum is certified by a dual bound from the multipliers (Dual_bound.h).
 // In the certified mode the solve goes on until that certificate itself is at most the
 // tolerance: from the point where the default rule would stop, the bound is computed every 25
@@ -41,7 +41,8 @@
 // benchmark meshes of up to 50,000 vertices, and on cow x3 (doc/performance.md, changes 8 and
 // 9). A try that ends at a KKT point (no constraint left to turn) whose gap, limited by the
 // bound's rounding on a tiny optimum, stays above the tolerance is kept: when the tries are
-// over, the solve ends at the one of least gap (a precision limit; change 27).
+// over and two of them ended so, or when the interior point's polish did, the solve ends at
+// the point of least gap (a precision limit; change 27).
 //
 // Built with TBB, an iteration uses every core: the solve is split by Two_column_cholesky, the
 // edge loops run in blocks of edges, the right-hand side is gathered per free vertex
@@ -98,10 +99,10 @@ constexpr int polish_default_minimum = 150;
 constexpr double polish_default_factor = 5;
 constexpr int polish_default_tries = 3, polish_certified_tries = 5;
 // A tail that has not settled by iteration `interior_point_after` (in the certified mode also
-// one whose polish tries have failed by then) is handed to the interior point, on a mesh of at
-// most `interior_point_max_vertices` vertices (it needs about 6 KB a vertex), whose point is
-// then polished on the constraints of value at most `interior_point_active_value`
-// (doc/performance.md, changes 24 and 27).
+// one whose polish tries are over by then, short of the precision limit) is handed to the
+// interior point, on a mesh of at most `interior_point_max_vertices` vertices (it needs about
+// 6 KB a vertex), whose point is then polished on the constraints of value at most
+// `interior_point_active_value` (doc/performance.md, changes 24 and 27).
 constexpr int interior_point_after = 1000;
 constexpr std::size_t interior_point_max_vertices = 200000;
 constexpr double interior_point_active_value = 1e-6;
@@ -110,6 +111,10 @@ constexpr double interior_point_active_value = 1e-6;
 // tolerance; a larger one means the extrapolation was fooled (a fast first drop, then a slow
 // tail), and the iterations go on.
 constexpr double confirmed_gap_ratio = 200;
+// The certified mode ends at the precision limit, at its KKT point of least gap, when its
+// tries are over and at least `precision_limit_tries` of them ended at a KKT point (later
+// iterates led to it again), or when the interior point's polish ended at one (change 27).
+constexpr int precision_limit_tries = 2;
 constexpr double polish_turn_tolerance = 1e-9;
 constexpr int polish_rounds = 24;
 constexpr double polish_shrink = 0.7;
@@ -285,9 +290,11 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   }
   bool gap_is_current = false; // result.gap is that of `feasible`
   // The certified mode: the polished point of least gap among those that satisfy the KKT
-  // conditions to round-off (no constraint to turn) without certifying the tolerance.
+  // conditions to round-off (no constraint to turn) without certifying the tolerance, and how
+  // many polish tries ended at such a point.
   UV_vector kkt_point;
   double kkt_gap = std::numeric_limits<double>::infinity();
+  int kkt_tries = 0;
   auto multipliers = [&]() { // of the constraints a, b >= 0, from the scaled ones
     std::vector<std::array<double, 2> > y(w);
     for(auto& v : y)
@@ -298,7 +305,8 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     return sign_constrained_dual_bound(geometry, lengths, signs, free_index, incidence, cholesky, feasible, multipliers());
   };
   // The optimum on the active set of z, corrected a few times; true if certified within the
-  // tolerance, then it replaces `feasible`.
+  // tolerance, then it replaces `feasible`. In the certified mode a try that ends at a KKT
+  // point without certifying counts, and keeps the point if its gap is the least so far.
   auto polish = [&]() {
     Active_set active(m);
     for(std::size_t e = 0; e < m; ++e)
@@ -345,10 +353,14 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
             wrong.emplace_back(-amount, 2 * e + std::size_t(c));
         }
       }
-      if(wrong.empty() && settings.certified && gap < kkt_gap)
+      if(wrong.empty() && settings.certified)
       {
-        kkt_point.swap(projected);
-        kkt_gap = gap;
+        ++kkt_tries;
+        if(gap < kkt_gap)
+        {
+          kkt_point.swap(projected);
+          kkt_gap = gap;
+        }
       }
       fewest = (std::min)(fewest, wrong.size());
       if(wrong.empty() || wrong.size() > polish_growth_limit * fewest + polish_growth_slack)
@@ -482,14 +494,25 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
         break;
       }
     }
+    // (the certified mode's tries over, short of the precision limit)
+    const bool tries_failed = polishes_left == 0 && kkt_tries < precision_limit_tries;
     if(k >= interior_point_after && !interior_point_tried && n <= interior_point_max_vertices &&
-       (!settled || (polishes_left == 0 && kkt_point.empty())) && seconds_since(begin) <= settings.time_limit)
+       (!settled || tries_failed) && seconds_since(begin) <= settings.time_limit)
     {
       interior_point_tried = true;
-      if(interior_point() && (!settings.certified || result.gap <= settings.tolerance))
+      const int kkt_before = kkt_tries;
+      if(interior_point())
       {
-        result.outcome = Admm_outcome::CONVERGED;
-        break;
+        if(!settings.certified || result.gap <= settings.tolerance)
+        {
+          result.outcome = Admm_outcome::CONVERGED;
+          break;
+        }
+        if(kkt_tries > kkt_before) // its polish ended at a KKT point
+        {
+          result.outcome = Admm_outcome::PRECISION_LIMIT;
+          break;
+        }
       }
     }
     if(settled && k - certified_at >= certify_every)
@@ -510,7 +533,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
         break;
       }
     }
-    if(polishes_left == 0 && !kkt_point.empty())
+    if(polishes_left == 0 && kkt_tries >= precision_limit_tries)
     {
       result.outcome = Admm_outcome::PRECISION_LIMIT;
       break;
