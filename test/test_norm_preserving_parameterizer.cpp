@@ -304,10 +304,8 @@ TEST(NormPreservingADMMSolver, ATiltedTubeReachesTheOptimumInBothModes)
   const Mesh tube = dense_tube(500, 30);
   SMP::Texture_polygon_mesh_options<Mesh, SMP::XY_min_max_initial_guess,
                                     SMP::Interior_point_quadratic_program_traits<double> > exact_options;
-  SMP::Texture_polygon_mesh_report exact;
-  Mesh exact_mesh = tube;
-  auto exact_uv = exact_mesh.add_property_map<Vertex, Point_2>("v:uv").first;
-  ASSERT_EQ(SMP::texture_polygon_mesh(exact_mesh, exact_uv, exact_options, &exact), SMP::OK) << exact.message;
+  const np_test::Textured exact(tube, exact_options);
+  ASSERT_EQ(exact.status, SMP::OK) << exact.report.message;
   for(const bool certified : {false, true})
   {
     np_test::Options options;
@@ -317,7 +315,7 @@ TEST(NormPreservingADMMSolver, ATiltedTubeReachesTheOptimumInBothModes)
     ASSERT_EQ(run.status, SMP::OK) << run.report.message;
     ASSERT_EQ(run.report.reports.size(), 1u);
     const SMP::Norm_preserving_report& report = run.report.reports[0];
-    const double distance = run.report.objective / exact.objective - 1;
+    const double distance = run.report.objective / exact.report.objective - 1;
     EXPECT_GE(distance, -1e-8) << certified;
     EXPECT_LE(distance, run.report.optimality_gap * (1 + 1e-12) + 1e-9) << certified;
     if(certified)

@@ -54,7 +54,7 @@ struct Mapped_mesh
   }
 };
 
-// `texture_polygon_mesh()` on `mesh`.
+// `texture_polygon_mesh()` on `mesh`, with options of any guess and solver.
 struct Textured
 {
   Mesh mesh;
@@ -62,7 +62,8 @@ struct Textured
   SMP::Texture_polygon_mesh_report report;
   SMP::Error_code status = SMP::OK;
 
-  explicit Textured(Mesh m, const Options& options = Options()) : mesh(std::move(m))
+  template <typename Call_options = Options>
+  explicit Textured(Mesh m, const Call_options& options = Call_options()) : mesh(std::move(m))
   {
     uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
     status = SMP::texture_polygon_mesh(mesh, uv, options, &report);
