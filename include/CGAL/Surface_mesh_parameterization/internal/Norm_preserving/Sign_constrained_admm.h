@@ -19,16 +19,16 @@
 // last two decreases (d2 r / (1 - r), r = d2 / d1), is at most the tolerance times f (or the
 // gap's floor, Dual_bound.h, near a zero optimum) at two checks in a row (doc/performance.md,
 // change 7; doc/decisions.md), and the certified gap then confirms it: at most
-// `confirmed_gap_ratio` times the tolerance (changes 27 and 28). On a slow tail the default mode tries
-// the polish described below as well: from iteration 150 (later on a mesh whose factorization
-// costs more per entry of its factor), then each time the iteration count has doubled, three
-// times at most; a try that certifies the tolerance ends the solve (doc/performance.md, change
-// 15). A tail that has not settled by iteration 1,000 (dense tubes seen end-on by the guess
-// crept to the iteration limit) is handed to the interior point on a mesh of up to 200,000
-// vertices, within the time limit, and the polish then tries to certify its point
-// (doc/performance.md, change 24); in the certified mode also a tail whose polish tries below
-// are over by then, short of the precision limit (change 27). The returned point is the last
-// feasible one (or the polish's), so it satisfies every constraint exactly, and its
+// `confirmed_gap_ratio` times the tolerance (changes 27 and 28). On a slow tail the default
+// mode tries the polish described below as well: from iteration 150 (later on a mesh whose
+// factorization costs more per entry of its factor), then each time the iteration count has
+// doubled, three times at most; a try that certifies the tolerance ends the solve
+// (doc/performance.md, change 15). A tail that has not settled by iteration 1,000 (dense tubes
+// seen end-on by the guess crept to the iteration limit) is handed to the interior point on a
+// mesh of up to 200,000 vertices, within the time limit, and the polish then tries to certify
+// its point (doc/performance.md, change 24); in the certified mode also a tail whose polish
+// tries below are over by then, short of the precision limit (change 27). The returned point is
+// the last feasible one (or the polish's), so it satisfies every constraint exactly, and its
 // distance to the optimum is certified by a dual bound from the multipliers (Dual_bound.h).
 // In the certified mode the solve goes on until that certificate itself is at most the
 // tolerance: from the point where the default rule would stop, the bound is computed every 25
