@@ -34,7 +34,8 @@ namespace Surface_mesh_parameterization {
 /// - by default, the solve stops when the decrease of the objective still to come,
 ///   extrapolated from the last iterations, is at most `tolerance` (relative to the
 ///   objective, or near a zero optimum to 1e-12 times the objective of the zero map) and the
-///   certified gap at most 150 times `tolerance`; a solve that has not stopped by iteration
+///   certified gap at most 150 times `tolerance` (once the objective has risen between two
+///   checks, at three checks in a row and 75 times); a solve that has not stopped by iteration
 ///   1,000, on a mesh of at most 200,000 vertices and within the time limit, is finished by
 ///   the interior point (`Interior_point_quadratic_program_traits`, within what is left of the
 ///   time limit), whose point the exact mode's active-set optimum then certifies within
@@ -62,9 +63,10 @@ public:
 
   /// creates a solver that stops when the extrapolated remaining decrease of the objective is
   /// at most `tolerance` times the objective (and the certified gap at most 150 times
-  /// `tolerance`), or after `max_iterations` iterations or `time_limit` seconds. The default
-  /// puts the objective within 1e-4 of the optimum on the test suite and the benchmark meshes
-  /// (doc/benchmarks.md).
+  /// `tolerance`, 75 once the objective has risen), or after `max_iterations` iterations or
+  /// `time_limit` seconds. The default puts the objective within 1e-4 of the optimum on the
+  /// test suite, the benchmark meshes, CGAL's data meshes of nonzero optimum and 62 of them
+  /// subdivided once (doc/benchmarks.md; doc/performance.md, change 29).
   explicit Norm_preserving_ADMM_solver(double tolerance = internal::Norm_preserving::admm_default_tolerance,
                                        int max_iterations = 20000,
                                        double time_limit = std::numeric_limits<double>::infinity())

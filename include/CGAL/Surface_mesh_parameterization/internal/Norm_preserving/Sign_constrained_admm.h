@@ -19,7 +19,8 @@
 // last two decreases (d2 r / (1 - r), r = d2 / d1), is at most the tolerance times f (or the
 // gap's floor, Dual_bound.h, near a zero optimum) at two checks in a row (doc/performance.md,
 // change 7; doc/decisions.md), and the certified gap then confirms it: at most
-// `confirmed_gap_ratio` times the tolerance (changes 27 and 28). On a slow tail the default
+// `confirmed_gap_ratio` times the tolerance (changes 27 and 28); once f has risen at a check,
+// three checks in a row and `risen_gap_ratio` (change 29). On a slow tail the default
 // mode tries the polish described below as well: from iteration 150 (later on a mesh whose
 // factorization costs more per entry of its factor), then each time the iteration count has
 // doubled, three times at most; a try that certifies the tolerance ends the solve
@@ -111,8 +112,10 @@ constexpr double interior_point_active_value = 1e-6;
 // first drop, then a slow tail; a pause in the decrease), and the iterations go on. The bound
 // is loose, so right and wrong stops overlap in the ratio (on the benchmark meshes right stops
 // reach 100 times, on CGAL's collection 180; wrong ones start at 60: doc/performance.md,
-// changes 27 and 28).
-constexpr double confirmed_gap_ratio = 150;
+// changes 27 and 28). Once the objective has risen at a check, the stop needs at most
+// `risen_gap_ratio` times the tolerance: of the traced solves the rule stopped after a rise,
+// half were more than 1e-4 above their optimum (change 29).
+constexpr double confirmed_gap_ratio = 150, risen_gap_ratio = 75;
 // The certified mode ends at the precision limit, at its KKT point of least gap, when its
 // tries are over and at least `precision_limit_tries` of them ended at a KKT point (later
 // iterates led to it again), or when the interior point's polish ended at one (change 27).
@@ -170,7 +173,9 @@ inline std::array<double, 2> edge_step(double l, double ca, double cb, double rh
 // The stopping rule: fed the objective of the feasible point at successive checks, says when
 // the decrease still to come, extrapolated geometrically from the last two decreases, has
 // been at most `tolerance` times the objective (or `floor`, if larger: an optimum of zero is
-// approached geometrically without end) at two checks in a row.
+// approached geometrically without end) at two checks in a row, or at three once the
+// objective has risen at a check (an objective that is not monotone can pause and swing,
+// and a swing's bottom looks settled: doc/performance.md, change 29).
 class Extrapolated_stop
 {
 public:
@@ -179,6 +184,7 @@ public:
   bool settled(double objective)
   {
     const double before = m_older - m_old, last = m_old - objective; // NaN at the first checks
+    m_risen = m_risen || last < 0;
     const double allowed = m_tolerance * (std::max)(objective, m_floor);
     bool small = (last == 0 && before >= 0) || objective <= allowed;
     if(last > 0 && before > last)
@@ -189,16 +195,20 @@ public:
     m_passed = small ? m_passed + 1 : 0;
     m_older = m_old;
     m_old = objective;
-    return m_passed >= 2;
+    return m_passed >= (m_risen ? 3 : 2);
   }
 
   // forgets the checks passed (a stop the certificate did not confirm).
   void restart() { m_passed = 0; }
 
+  // whether the objective has risen at a check.
+  bool risen() const { return m_risen; }
+
 private:
   double m_tolerance, m_floor;
   double m_older = std::numeric_limits<double>::quiet_NaN(), m_old = std::numeric_limits<double>::quiet_NaN();
   int m_passed = 0;
+  bool m_risen = false;
 };
 
 // Solves Eq. 5 from `uv` (the transformed guess, which satisfies the constraints) and
@@ -478,7 +488,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     {
       result.gap = relative_gap(objective, dual_bound(), scale);
       gap_is_current = true;
-      if(result.gap <= confirmed_gap_ratio * settings.tolerance)
+      if(result.gap <= (stop.risen() ? risen_gap_ratio : confirmed_gap_ratio) * settings.tolerance)
       {
         result.outcome = Admm_outcome::CONVERGED;
         break;
