@@ -148,9 +148,11 @@ INSTANTIATE_TEST_SUITE_P(Suite, RealMesh,
                     "holes", "lion"));              // several border loops
 
 // The exact mode: certified within 1e-9 of the optimum, which the interior point confirms. The
-// active-set polish from the point where the default stops certifies there: no iteration beyond
-// the default's (on lion only since its polish ignores round-off turns: it churned before; man's
-// polish has over 25,000 unknowns, CHOLMOD's factorization where configured).
+// active-set polish from the point where the default's rule first settles certifies there: no
+// iteration beyond the default's (on lion only since its polish ignores round-off turns: it
+// churned before; man's polish has over 25,000 unknowns, CHOLMOD's factorization where
+// configured). The default may go on a check further when its certificate asks for a third
+// check (nefertiti: 60 and 65 iterations).
 TEST(NormPreservingADMMSolver, CertifiedModeReachesTheOptimum)
 {
   for(const std::string name : {"nefertiti", "cow", "mushroom", "knot1", "lion", "man"})
@@ -170,7 +172,7 @@ TEST(NormPreservingADMMSolver, CertifiedModeReachesTheOptimum)
     EXPECT_EQ(run.report.max_constraint_violation, 0.) << name;
     EXPECT_LE(run.report.optimality_gap, 1e-9) << name;
     EXPECT_NEAR(run.report.objective, exact.report.objective, 1e-8 * exact.report.objective) << name;
-    EXPECT_EQ(run.report.solver_iterations, fast.report.solver_iterations) << name;
+    EXPECT_LE(run.report.solver_iterations, fast.report.solver_iterations) << name;
   }
 }
 
@@ -220,9 +222,9 @@ TEST(NormPreservingADMMSolver, DefaultModePolishesASlowTail)
   }
 }
 
-// A tube of radius 0.3: `rings` rings of 8 vertices `spacing` apart (dense at 0.02: the ring's
-// edges are 0.23 long), its axis along z tilted by `tilt` degrees about x.
-Mesh dense_tube(int rings, double tilt, double spacing = 0.02)
+// A tube of radius 0.3: `rings` rings of 8 vertices `spacing` apart (dense at the default
+// 0.02: the rings' edges are 0.23 long), its axis along z tilted by `tilt` degrees about x.
+Mesh tube_of_rings(int rings, double tilt, double spacing = 0.02)
 {
   Mesh tube;
   const int around = 8;
@@ -251,7 +253,7 @@ Mesh dense_tube(int rings, double tilt, double spacing = 0.02)
 // before), and which the interior point run on its own confirms (to its own accuracy, 1e-9).
 TEST(NormPreservingADMMSolver, HandsAStalledTailToTheInteriorPoint)
 {
-  const Mesh tube = dense_tube(200, 0);
+  const Mesh tube = tube_of_rings(200, 0);
   Mapped_mesh exact(tube);
   Exact_parameterizer exact_parameterizer;
   exact.parameterize(exact_parameterizer, *halfedges(exact.mesh).begin());
@@ -301,7 +303,7 @@ void expect_exact_mode_status(const SMP::Norm_preserving_report& report, const s
 // a KKT point of gap 2.1e-9 here: its precision limit).
 TEST(NormPreservingADMMSolver, ATiltedTubeReachesTheOptimumInBothModes)
 {
-  const Mesh tube = dense_tube(500, 30);
+  const Mesh tube = tube_of_rings(500, 30);
   SMP::Texture_polygon_mesh_options<Mesh, SMP::XY_min_max_initial_guess,
                                     SMP::Interior_point_quadratic_program_traits<double> > exact_options;
   const np_test::Textured exact(tube, exact_options);
@@ -350,18 +352,23 @@ void expect_within_its_gap_of_the_optimum(const Mesh& mesh, const np_test::Textu
   EXPECT_LE(distance, run.report.optimality_gap * (1 + 1e-12) + 1e-9);
 }
 
-// CGAL's mask_cone: on its larger component (901 vertices) the decrease of the objective pauses
-// at iterations 115-125 and then speeds up again; the extrapolated stop took the pause for
-// convergence, 4.8e-4 above that component's optimum (1.45e-4 over the mesh), with a certified
-// gap of 165 times the tolerance, which confirmed it when the ratio allowed was 200. Now the
-// stop is refused and the solve goes on (its polish certifies that component at iteration
-// 170): 4.6e-6 above the optimum over the mesh.
+// Pauses in the decrease of the objective, which then speeds up again: the extrapolated stop
+// took them for convergence. On CGAL's mask_cone (its larger component, at iterations 115-125)
+// 1.45e-4 above the optimum over the mesh, with a certified gap of 165 times the tolerance,
+// which confirmed it when the ratio allowed was 200: now the stop is refused and the polish
+// certifies that component at iteration 170 (4.6e-6 above). On CGAL's anchor subdivided twice
+// (iterations 190-200) 1.05e-4 above, with a gap of 96 times: a gap above 60 times now needs a
+// third check, which the decrease that resumes fails (its polish certifies at 240).
 TEST(NormPreservingADMMSolver, APauseInTheDecreaseDoesNotStopTheDefault)
 {
-  const Mesh mesh = np_test::load_mesh("mask_cone");
-  double distance;
-  expect_within_its_gap_of_the_optimum(mesh, np_test::Textured(mesh), distance);
-  EXPECT_LE(distance, 1e-4);
+  Mesh anchor = np_test::load_mesh("anchor");
+  CGAL::Subdivision_method_3::Loop_subdivision(anchor, CGAL::parameters::number_of_iterations(2));
+  for(const Mesh& mesh : {np_test::load_mesh("mask_cone"), anchor})
+  {
+    double distance;
+    expect_within_its_gap_of_the_optimum(mesh, np_test::Textured(mesh), distance);
+    EXPECT_LE(distance, 1e-4) << num_vertices(mesh);
+  }
 }
 
 // CGAL's poly2x^2+y^2-0.062500 subdivided once.
@@ -377,11 +384,11 @@ Mesh subdivided_poly2x()
 // with small rises; the extrapolated stop took a swing's bottom for convergence, 3.9e-4 and
 // 1.0e-3 above the optimum, and the certificate confirmed it (gaps of 60 and 127 times the
 // tolerance). Once the objective has risen the stop needs three checks in a row and a gap of
-// at most 75 times the tolerance: 6.1e-5 above the optimum, and the tube's tail handed to the
-// interior point at iteration 1,000.
+// at most 75 times the tolerance: poly2x ends 6.1e-5 above its optimum, and the tube's tail
+// goes on to the interior point at iteration 1,000 (9.5e-10 above).
 TEST(NormPreservingADMMSolver, ARisingObjectiveDoesNotStopTheDefault)
 {
-  const Mesh mesh = subdivided_poly2x(), tube = dense_tube(300, 20, 0.1);
+  const Mesh mesh = subdivided_poly2x(), tube = tube_of_rings(300, 20, 0.1);
   for(const Mesh* m : {&mesh, &tube})
   {
     double distance;

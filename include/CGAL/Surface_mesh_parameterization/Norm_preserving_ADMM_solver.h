@@ -33,13 +33,14 @@ namespace Surface_mesh_parameterization {
 /// Two modes:
 /// - by default, the solve stops when the decrease of the objective still to come,
 ///   extrapolated from the last iterations, is at most `tolerance` (relative to the
-///   objective, or near a zero optimum to 1e-12 times the objective of the zero map) and the
-///   certified gap at most 150 times `tolerance` (once the objective has risen between two
-///   checks, at three checks in a row and 75 times); a solve that has not stopped by iteration
-///   1,000, on a mesh of at most 200,000 vertices and within the time limit, is finished by
-///   the interior point (`Interior_point_quadratic_program_traits`, within what is left of the
-///   time limit), whose point the exact mode's active-set optimum then certifies within
-///   `tolerance` when it can (otherwise the reported bound is looser);
+///   objective, or near a zero optimum to 1e-12 times the objective of the zero map) at two
+///   checks in a row and the certified gap at most 60 times `tolerance`, or at three checks in
+///   a row and 150 times (three checks and 75 times once the objective has risen at a check);
+///   a solve that has not stopped by iteration 1,000, on a mesh of at most 200,000 vertices
+///   and within the time limit, is finished by the interior point
+///   (`Interior_point_quadratic_program_traits`, within what is left of the time limit), whose
+///   point the exact mode's active-set optimum then certifies within `tolerance` when it can
+///   (otherwise the reported bound is looser);
 /// - `certified()`, the exact mode: the solve stops when the certified gap is at most
 ///   `tolerance` (default 1e-9); from where the default would stop, it also tries the exact
 ///   optimum on the set of constraints the iterations have made active, corrected a few
@@ -62,11 +63,12 @@ public:
   typedef internal::Norm_preserving::Admm_state State;
 
   /// creates a solver that stops when the extrapolated remaining decrease of the objective is
-  /// at most `tolerance` times the objective (and the certified gap at most 150 times
-  /// `tolerance`, 75 once the objective has risen), or after `max_iterations` iterations or
-  /// `time_limit` seconds. The default puts the objective within 1e-4 of the optimum on the
-  /// test suite, the benchmark meshes, CGAL's data meshes of nonzero optimum and 62 of them
-  /// subdivided once (doc/benchmarks.md; doc/performance.md, change 29).
+  /// at most `tolerance` times the objective (and the certified gap at most 60 to 150 times
+  /// `tolerance`, by the checks passed), or after
+  /// `max_iterations` iterations or `time_limit` seconds. The default puts the objective
+  /// within 1e-4 of the optimum on the test suite, the benchmark meshes, CGAL's data meshes of
+  /// nonzero optimum and 102 of them subdivided (doc/benchmarks.md; doc/performance.md,
+  /// changes 29 and 30).
   explicit Norm_preserving_ADMM_solver(double tolerance = internal::Norm_preserving::admm_default_tolerance,
                                        int max_iterations = 20000,
                                        double time_limit = std::numeric_limits<double>::infinity())
