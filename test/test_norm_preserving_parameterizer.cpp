@@ -173,6 +173,57 @@ TEST(NormPreservingADMMSolver, CertifiedModeReachesTheOptimum)
     EXPECT_LE(run.report.optimality_gap, 1e-9) << name;
     EXPECT_NEAR(run.report.objective, exact.report.objective, 1e-8 * exact.report.objective) << name;
     EXPECT_LE(run.report.solver_iterations, fast.report.solver_iterations) << name;
+    EXPECT_LE(fast.report.solver_iterations - run.report.solver_iterations, 5) << name; // a check
+  }
+}
+
+// The stopping rule's bookkeeping, on objectives 1 + 10^-k, whose extrapolated decrease is
+// within the tolerance from k = 5 on: two such checks in a row settle, which a gap of at most
+// 60 times the tolerance confirms, one of at most 150 times at a third check; a larger (or NaN)
+// gap, or a check that is not small, starts the count over. After a rise of more than 1e-9 of
+// the objective: three checks and at most 75 times; a rise of round-off does not count.
+TEST(NormPreservingADMMSolver, TheStopAsksMoreOfALooseGapOrARisingObjective)
+{
+  typedef SMP::internal::Norm_preserving::Extrapolated_stop Stop;
+  const double tolerance = SMP::internal::Norm_preserving::admm_default_tolerance;
+  // feeds 1 + 10^-k for k = first, ..., last; whether the last check settled
+  const auto feed = [](Stop& stop, int first, int last) {
+    bool settled = false;
+    for(int k = first; k <= last; ++k)
+      settled = stop.settled(1 + std::pow(10., -k));
+    return settled;
+  };
+  Stop stop(tolerance, 0);
+  EXPECT_FALSE(feed(stop, 0, 5));
+  EXPECT_TRUE(feed(stop, 6, 6));
+  Stop tight = stop, loose = stop, wrong = stop;
+  EXPECT_TRUE(tight.confirmed(60));
+  EXPECT_FALSE(loose.confirmed(96));
+  EXPECT_TRUE(feed(loose, 7, 7));
+  EXPECT_TRUE(loose.confirmed(150));
+  EXPECT_FALSE(stop.confirmed(96));
+  EXPECT_FALSE(stop.settled(0.9));
+  EXPECT_FALSE(wrong.confirmed(151));
+  EXPECT_FALSE(feed(wrong, 7, 7));
+  EXPECT_TRUE(feed(wrong, 8, 8));
+  EXPECT_FALSE(wrong.confirmed(std::numeric_limits<double>::quiet_NaN()));
+  EXPECT_FALSE(feed(wrong, 9, 9));
+  for(const double rise : {1e-6, 1e-13})
+  {
+    Stop risen(tolerance, 0);
+    feed(risen, 0, 4);
+    EXPECT_FALSE(risen.settled(1 + 1e-4 + rise)) << rise;
+    EXPECT_FALSE(feed(risen, 5, 6)) << rise;
+    EXPECT_EQ(feed(risen, 7, 7), rise < 1e-9) << rise;
+    if(rise < 1e-9)
+      EXPECT_TRUE(risen.confirmed(60)) << rise;
+    else
+    {
+      EXPECT_TRUE(feed(risen, 8, 8));
+      Stop beyond = risen;
+      EXPECT_FALSE(beyond.confirmed(76));
+      EXPECT_TRUE(risen.confirmed(75));
+    }
   }
 }
 

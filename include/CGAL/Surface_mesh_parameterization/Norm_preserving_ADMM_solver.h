@@ -63,8 +63,8 @@ public:
   typedef internal::Norm_preserving::Admm_state State;
 
   /// creates a solver that stops when the extrapolated remaining decrease of the objective is
-  /// at most `tolerance` times the objective (and the certified gap at most 60 to 150 times
-  /// `tolerance`, by the checks passed), or after
+  /// at most `tolerance` times the objective (and the certified gap at most 60 times
+  /// `tolerance` at two checks, 150 at three, 75 after a rise), or after
   /// `max_iterations` iterations or `time_limit` seconds. The default puts the objective
   /// within 1e-4 of the optimum on the test suite, the benchmark meshes, CGAL's data meshes of
   /// nonzero optimum and 102 of them subdivided (doc/benchmarks.md; doc/performance.md,

@@ -114,10 +114,11 @@ constexpr double interior_point_active_value = 1e-6;
 // is loose, so right and wrong stops overlap in the ratio (on the benchmark meshes right stops
 // reach 100 times, on CGAL's collection 180; wrong ones start at 60: doc/performance.md,
 // changes 27 and 28). In that overlap, above `two_check_gap_ratio` times, the stop needs a
-// third check in a row (a pause of two checks fooled the rule there: change 30). Once the
-// objective has risen at a check, it needs three checks and at most `risen_gap_ratio` times
-// the tolerance: of the 8 traced components of more than 50 vertices the rule stopped after
-// a rise, 4 were more than 1e-4 above their optimum (change 29).
+// third check in a row (a pause of two checks fooled the rule there: change 30; the wrong
+// stops seen at 60 times and below had a rise before them). Once the objective has risen at a
+// check, it needs three checks and at most `risen_gap_ratio` times the tolerance: of the 8
+// traced components of more than 50 vertices the rule stopped after a rise, 4 were more than
+// 1e-4 above their optimum (change 29).
 constexpr double confirmed_gap_ratio = 150, two_check_gap_ratio = 60, risen_gap_ratio = 75;
 // The certified mode ends at the precision limit, at its KKT point of least gap, when its
 // tries are over and at least `precision_limit_tries` of them ended at a KKT point (later
@@ -178,7 +179,8 @@ inline std::array<double, 2> edge_step(double l, double ca, double cb, double rh
 // been at most `tolerance` times the objective (or `floor`, if larger: an optimum of zero is
 // approached geometrically without end) at two checks in a row, or at three once the
 // objective has risen at a check (an objective that is not monotone can pause and swing,
-// and a swing's bottom looks settled: doc/performance.md, change 29).
+// and a swing's bottom looks settled: doc/performance.md, change 29); and whether the
+// certified gap then confirms the stop (the ratios above).
 class Extrapolated_stop
 {
 public:
