@@ -197,13 +197,13 @@ TEST(NormPreservingADMMSolver, TheStopAsksMoreOfALooseGapOrARisingObjective)
   EXPECT_FALSE(feed(stop, 0, 5));
   EXPECT_TRUE(feed(stop, 6, 6));
   Stop tight = stop, loose = stop, wrong = stop;
-  EXPECT_TRUE(tight.confirmed(60));
-  EXPECT_FALSE(loose.confirmed(96));
+  EXPECT_TRUE(tight.confirmed(60 * tolerance));
+  EXPECT_FALSE(loose.confirmed(96 * tolerance));
   EXPECT_TRUE(feed(loose, 7, 7));
-  EXPECT_TRUE(loose.confirmed(150));
-  EXPECT_FALSE(stop.confirmed(96));
+  EXPECT_TRUE(loose.confirmed(150 * tolerance));
+  EXPECT_FALSE(stop.confirmed(96 * tolerance));
   EXPECT_FALSE(stop.settled(0.9));
-  EXPECT_FALSE(wrong.confirmed(151));
+  EXPECT_FALSE(wrong.confirmed(151 * tolerance));
   EXPECT_FALSE(feed(wrong, 7, 7));
   EXPECT_TRUE(feed(wrong, 8, 8));
   EXPECT_FALSE(wrong.confirmed(std::numeric_limits<double>::quiet_NaN()));
@@ -216,13 +216,13 @@ TEST(NormPreservingADMMSolver, TheStopAsksMoreOfALooseGapOrARisingObjective)
     EXPECT_FALSE(feed(risen, 5, 6)) << rise;
     EXPECT_EQ(feed(risen, 7, 7), rise < 1e-9) << rise;
     if(rise < 1e-9)
-      EXPECT_TRUE(risen.confirmed(60)) << rise;
+      EXPECT_TRUE(risen.confirmed(60 * tolerance)) << rise;
     else
     {
       EXPECT_TRUE(feed(risen, 8, 8));
       Stop beyond = risen;
-      EXPECT_FALSE(beyond.confirmed(76));
-      EXPECT_TRUE(risen.confirmed(75));
+      EXPECT_FALSE(beyond.confirmed(76 * tolerance));
+      EXPECT_TRUE(risen.confirmed(75 * tolerance));
     }
   }
 }

@@ -204,16 +204,16 @@ public:
     return m_passed >= (m_risen ? 3 : 2);
   }
 
-  // whether the stop settled() allowed holds, given its certified gap in times the tolerance;
-  // a gap that no number of checks confirms forgets the checks passed.
-  bool confirmed(double gap_ratio)
+  // whether the stop settled() allowed holds, given its certified (relative) gap; a gap that
+  // no number of checks confirms forgets the checks passed.
+  bool confirmed(double gap)
   {
-    if(!(gap_ratio <= (m_risen ? risen_gap_ratio : confirmed_gap_ratio)))
+    if(!(gap <= (m_risen ? risen_gap_ratio : confirmed_gap_ratio) * m_tolerance))
     {
       m_passed = 0;
       return false;
     }
-    return m_passed >= 3 || gap_ratio <= two_check_gap_ratio;
+    return m_passed >= 3 || gap <= two_check_gap_ratio * m_tolerance;
   }
 
 private:
@@ -500,7 +500,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     {
       result.gap = relative_gap(objective, dual_bound(), scale);
       gap_is_current = true;
-      if(stop.confirmed(result.gap / settings.tolerance))
+      if(stop.confirmed(result.gap))
       {
         result.outcome = Admm_outcome::CONVERGED;
         break;
