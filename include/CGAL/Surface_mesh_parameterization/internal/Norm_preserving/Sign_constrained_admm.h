@@ -189,9 +189,10 @@ public:
   bool settled(double objective)
   {
     const double before = m_older - m_old, last = m_old - objective; // NaN at the first checks
+    const double reference = (std::max)(objective, m_floor);
     // a rise beyond round-off (those that fooled the rule were 5e-6 of the objective and more)
-    m_risen = m_risen || last < -1e-9 * (std::max)(objective, m_floor);
-    const double allowed = m_tolerance * (std::max)(objective, m_floor);
+    m_risen = m_risen || last < -1e-9 * reference;
+    const double allowed = m_tolerance * reference;
     bool small = (last == 0 && before >= 0) || objective <= allowed;
     if(last > 0 && before > last)
     {
