@@ -47,6 +47,15 @@ function(refused expected_output input basename)
   expect_nothing_written(${basename})
 endfunction()
 
+# refused() on a file `name` of the given content (the strings after `name`, joined), written to
+# out_<name without extension>.
+function(refused_file expected_output name)
+  string(CONCAT content ${ARGN})
+  file(WRITE "${WORK}/${name}" "${content}")
+  get_filename_component(stem "${name}" NAME_WE)
+  refused("cannot read .*${name}: ${expected_output}" ${name} out_${stem})
+endfunction()
+
 # A small output: every uv in [0,1], and every face corner `i/i` names an existing vertex and
 # its own texture coordinate.
 function(expect_faces_reference_vt basename)
@@ -86,21 +95,51 @@ run(2 "--fixed-pair takes two vertex indices" --fixed-pair 1)
 
 # Inputs that cannot be read or textured: exit 1, a message that says what is wrong, no file.
 refused("cannot read .*missing.off: no such file" missing.off out_missing)
-file(WRITE "${WORK}/garbage.off" "this is not a mesh\n")
-refused("cannot read .*garbage.off: not a valid off file" garbage.off out_garbage)
-file(WRITE "${WORK}/empty.obj" "")
-refused("cannot read .*empty.obj: the file is empty" empty.obj out_empty)
-file(WRITE "${WORK}/points.obj" "v 0 0 0\nv 1 0 0\n")
-refused("cannot read .*points.obj: .*no face" points.obj out_points)
-file(WRITE "${WORK}/bad_index.obj" "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")
-refused("cannot read .*bad_index.obj: not a valid obj file: line 4: vertex 4 of 3" bad_index.obj out_bad_index)
-file(WRITE "${WORK}/bad_vertex.obj" "v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n")
-refused("cannot read .*bad_vertex.obj: not a valid obj file: line 2: a vertex needs three coordinates"
-        bad_vertex.obj out_bad_vertex)
-file(WRITE "${WORK}/mesh.xyz" "0 0 0\n")
-refused("cannot read .*mesh.xyz: not a mesh format: .xyz" mesh.xyz out_unsupported)
+refused_file("not a valid off file" garbage.off "this is not a mesh\n")
+refused_file("the file is empty" empty.obj "")
+refused_file(".*no face" points.obj "v 0 0 0\nv 1 0 0\n")
+refused_file("not a valid obj file: line 4: vertex 4 of 3" bad_index.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")
+refused_file("not a valid obj file: line 2: a vertex needs three coordinates" bad_vertex.obj
+             "v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n")
+refused_file("not a mesh format: .xyz" mesh.xyz "0 0 0\n")
 refused("error: .*fixed vertices are not" "${MESHES}/cow.off" out_badpair --fixed-pair 0,2000)
 refused("error: .*the file has 2904 vertices" "${MESHES}/cow.off" out_farpair --fixed-pair 0,5000)
+# What CGAL 5.5's readers crash on (a PLY of integer coordinates) or throw on (a negative face
+# size), and a position the OBJ would carry as it is (a NaN on a vertex on no face).
+refused_file("not a readable ply file: its vertex coordinate x is of type int" int_coordinates.ply
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty int y\nproperty int z\n"
+             "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+refused_file("not a readable ply file: its vertices have no z coordinate" no_z.ply
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+             "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0\n1 0\n0 1\n3 0 1 2\n")
+refused_file("not a valid off file: a count is negative or out of range" negative_size.off
+             "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n")
+refused_file("not a valid stl file: Error while" truncated.stl
+             "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n"
+             "endloop\nendfacet\nfacet normal 0 0 1\n")
+file(WRITE "${WORK}/nan_alone.obj" "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan nan nan\nf 1 2 3\n")
+refused("vertex 3 of nan_alone.obj is on no face and has a non-finite coordinate" nan_alone.obj out_nan_alone)
+
+# Outputs that cannot be written: a basename that names no file (exit 2), a directory that does
+# not exist (created by nothing), an output file that is a directory; a scratch directory of the
+# same name as the tool's is left as it was.
+run(2 "the output basename must end in a file name, not 'sub/'" "${MESHES}/cube_quad.off" sub/)
+run(1 "cannot write .*no such directory: .*not_there; nothing written" "${MESHES}/cube_quad.off" not_there/out)
+if(EXISTS "${WORK}/not_there")
+  message(FATAL_ERROR "the tool created the missing output directory")
+endif()
+file(MAKE_DIRECTORY "${WORK}/blocked_uv.svg")
+run(1 "cannot write .*blocked_uv.svg is a directory; nothing written" "${MESHES}/cube_quad.off" blocked)
+foreach(suffix .obj .mtl .png _report.txt)
+  if(EXISTS "${WORK}/blocked${suffix}")
+    message(FATAL_ERROR "a refused write left blocked${suffix} behind")
+  endif()
+endforeach()
+file(WRITE "${WORK}/kept.partial/mine.txt" "not the tool's\n")
+run(0 "wrote kept.obj" "${MESHES}/cube_quad.off" kept)
+if(NOT EXISTS "${WORK}/kept.partial/mine.txt")
+  message(FATAL_ERROR "the tool removed a kept.partial directory it had not made")
+endif()
 
 # Every defect of real files is textured with the default options.
 # Two triangles that share only a vertex (a bow tie).

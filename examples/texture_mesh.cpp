@@ -23,8 +23,10 @@
 #include <fstream>
 #include <future>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -150,6 +152,9 @@ std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
   if(positional.size() > 0) s.input = positional[0];
   if(positional.size() > 1) s.output = positional[1];
   else if(positional.size() == 1) s.output = fs::path(s.input).stem().string() + "_textured";
+  const fs::path name = fs::path(s.output).filename();
+  if(name.empty() || name == "." || name == "..")
+    return "the output basename must end in a file name, not '" + s.output + "'";
   return std::nullopt;
 }
 
@@ -189,6 +194,56 @@ SMP::Error_code texture(const Soup& soup, UV& uv, const Settings& s, SMP::Textur
   return SMP::texture_polygon_soup(soup.points, soup.polygons, CGAL::make_property_map(uv), options, &report);
 }
 
+// Why CGAL 5.5's PLY soup reader cannot read the vertices of the file at `path`, if it cannot:
+// it reads a missing x, y or z as 0, and crashes on coordinates that are not floating point.
+std::optional<std::string> ply_vertex_problem(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line, word;
+  if(!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
+    return std::nullopt; // not a PLY header: the reader says what is wrong
+  bool in_vertex = false;
+  std::map<std::string, std::string> types; // of the vertex element's scalar properties
+  for(int k = 0; k < 10000 && std::getline(in, line); ++k) // a header, not the whole file
+  {
+    std::istringstream words(line);
+    if(!(words >> word))
+      continue;
+    if(word == "end_header")
+    {
+      for(const std::string axis : {"x", "y", "z"})
+      {
+        const auto type = types.find(axis);
+        if(type == types.end())
+          return "its vertices have no " + axis + " coordinate";
+        if(type->second != "float" && type->second != "float32" && type->second != "double" && type->second != "float64")
+          return "its vertex coordinate " + axis + " is of type " + type->second + " (CGAL 5.5 reads float and double)";
+      }
+      return std::nullopt;
+    }
+    std::string type, name;
+    if(word == "element" && words >> name)
+      in_vertex = name == "vertex";
+    else if(word == "property" && in_vertex && words >> type >> name && type != "list")
+      types[name] = type;
+  }
+  return std::nullopt; // no end of the header: the reader says what is wrong
+}
+
+// The standard streams captured while it lives (a reader's messages), restored even when the
+// reader throws.
+struct Captured_streams
+{
+  std::ostringstream text;
+  std::streambuf* const err = std::cerr.rdbuf(text.rdbuf());
+  std::streambuf* const out = std::cout.rdbuf(text.rdbuf());
+  ~Captured_streams()
+  {
+    std::cerr.rdbuf(err);
+    std::cout.rdbuf(out);
+  }
+};
+
 // Reads `path`: OBJ with the tool's own reader (obj_soup_reader.h), the other formats with
 // CGAL's polygon soup reader; on failure, says what is wrong.
 std::optional<std::string> read_soup(const std::string& path, Soup& soup)
@@ -215,36 +270,72 @@ std::optional<std::string> read_soup(const std::string& path, Soup& soup)
       return "the " + format + " file has no face";
     return std::nullopt;
   }
-  // The reader says why it failed on the standard streams: keep its first line.
-  std::ostringstream said;
-  std::streambuf* const err = std::cerr.rdbuf(said.rdbuf());
-  std::streambuf* const out = std::cout.rdbuf(said.rdbuf());
-  const bool read = CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons, CGAL::parameters::verbose(true));
-  std::cerr.rdbuf(err);
-  std::cout.rdbuf(out);
+  if(extension == ".ply")
+    if(const std::optional<std::string> problem = ply_vertex_problem(path))
+      return "not a readable ply file: " + *problem;
+  // The reader says why it failed on the standard streams: keep its first line that names an
+  // error, else its first that is not a progress line ("Parsing ASCII file..."). It throws on
+  // some malformed counts.
+  Captured_streams said;
+  bool read = false;
+  try
+  {
+    read = CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons, CGAL::parameters::verbose(true));
+  }
+  catch(const std::bad_alloc&)
+  {
+    return "not a valid " + format + " file: its counts ask for more memory than there is";
+  }
+  catch(const std::length_error&)
+  {
+    return "not a valid " + format + " file: a count is negative or out of range";
+  }
+  catch(const std::exception& e)
+  {
+    return "not a valid " + format + " file: the reader failed (" + e.what() + ")";
+  }
   if(read && !soup.polygons.empty())
     return std::nullopt;
-  std::string reason = said.str();
-  reason = reason.substr(0, reason.find('\n'));
+  std::istringstream lines(said.text.str());
+  std::string reason, line;
+  while(std::getline(lines, line))
+    if(line.find("rror") != std::string::npos)
+    {
+      reason = line;
+      break;
+    }
+    else if(reason.empty() && line.compare(0, 7, "Parsing") != 0)
+      reason = line;
   if(read || (!soup.points.empty() && soup.polygons.empty() && reason.find("empty") != std::string::npos))
     return "the " + format + " file has no face";
   return "not a valid " + format + " file" + (reason.empty() ? std::string() : ": " + reason);
 }
 
-// Writes every output file into a scratch directory beside them, then moves them in place:
-// on any failure nothing is left behind.
-bool write_outputs(const Settings& s, const Soup& soup, const UV& uv, const std::vector<char>& has_uv,
-                   const std::string& report)
+// Writes every output file into a new scratch directory beside them, then moves them in place:
+// on any failure nothing is left behind, and the reason is returned.
+std::optional<std::string> write_outputs(const Settings& s, const Soup& soup, const UV& uv,
+                                         const std::vector<char>& has_uv, const std::string& report)
 {
   const fs::path target = fs::absolute(s.output);
-  const fs::path scratch = target.parent_path() / (target.filename().string() + ".partial");
-  std::error_code ec;
-  fs::remove_all(scratch, ec);
-  if(!fs::create_directories(scratch, ec))
-    return false;
+  const fs::path directory = target.parent_path();
   const std::string stem = target.filename().string();
   const std::vector<std::string> names = {stem + ".obj", stem + ".mtl", stem + ".png", stem + "_uv.svg",
                                           stem + "_report.txt"};
+  std::error_code ec;
+  if(!fs::is_directory(directory, ec))
+    return "no such directory: " + directory.string();
+  for(const std::string& name : names)
+    if(fs::is_directory(directory / name, ec))
+      return (directory / name).string() + " is a directory";
+  fs::path scratch; // stem.partial, or stem.partial.1, ...: one this run creates
+  for(int k = 0; scratch.empty(); ++k)
+  {
+    const fs::path candidate = directory / (stem + ".partial" + (k > 0 ? "." + std::to_string(k) : std::string()));
+    if(fs::create_directory(candidate, ec))
+      scratch = candidate;
+    else if(ec || k == 100)
+      return "cannot create a directory in " + directory.string();
+  }
   std::ofstream text((scratch / names[4]).string());
   text << report;
   text.close();
@@ -258,16 +349,23 @@ bool write_outputs(const Settings& s, const Soup& soup, const UV& uv, const std:
     }
   bool ok = bool(text) && np_examples::write_textured_obj((scratch / stem).string(), soup.points, soup.polygons, uv) &&
             np_examples::write_uv_layout_svg((scratch / names[3]).string(), layout);
-  for(std::size_t k = 0; ok && k < names.size(); ++k)
+  std::size_t moved = 0;
+  while(ok && moved < names.size())
   {
-    fs::rename(scratch / names[k], target.parent_path() / names[k], ec);
+    fs::rename(scratch / names[moved], directory / names[moved], ec);
     ok = !ec;
+    moved += ok;
   }
+  for(std::size_t k = 0; !ok && k < moved; ++k)
+    fs::remove(directory / names[k], ec);
   fs::remove_all(scratch, ec);
-  return ok;
+  if(!ok)
+    return "cannot write into " + directory.string();
+  return std::nullopt;
 }
 
-int main(int argc, char** argv)
+// The tool; main() turns what escapes it (a reader's or the allocator's exception) into exit 1.
+int run(int argc, char** argv)
 {
   Settings s;
   bool help = false;
@@ -288,6 +386,22 @@ int main(int argc, char** argv)
   {
     std::cerr << "error: cannot read " << s.input << ": " << *unread << '\n';
     return 1;
+  }
+
+  // The library leaves a vertex on no face alone; the OBJ would carry its position as it is.
+  std::vector<char> on_face(soup.points.size(), 0);
+  for(const Polygon& polygon : soup.polygons)
+    for(std::size_t i : polygon)
+      if(i < on_face.size()) // an index out of range is the library's to report
+        on_face[i] = 1;
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    const Point_3& p = soup.points[i];
+    if(!on_face[i] && !(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z())))
+    {
+      std::cerr << "error: vertex " << i << " of " << s.input << " is on no face and has a non-finite coordinate\n";
+      return 1;
+    }
   }
 
   // Vertices on no face keep {0, 0}: one vt per v in the OBJ.
@@ -351,11 +465,29 @@ int main(int argc, char** argv)
           << "coincident vertices welded: " << report.welded_vertices << '\n'
           << "face corners dropped as repeats: " << report.repeated_corners << '\n'
           << "components of zero extent (mapped to a point): " << report.point_components << '\n';
-  if(!with_progress("writing " + s.output, [&] { return write_outputs(s, soup, uv, has_uv, details.str()); }))
+  if(const auto unwritten = with_progress("writing " + s.output, [&] { return write_outputs(s, soup, uv, has_uv, details.str()); }))
   {
-    std::cerr << "error: cannot write " << s.output << ".obj/.mtl/.png/_uv.svg/_report.txt; nothing written\n";
+    std::cerr << "error: cannot write " << s.output << ".obj/.mtl/.png/_uv.svg/_report.txt: " << *unwritten
+              << "; nothing written\n";
     return 1;
   }
   std::cout << summary.str() << "wrote " << s.output << ".obj, .mtl, .png, _uv.svg, _report.txt\n";
   return 0;
+}
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    return run(argc, argv);
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "error: out of memory; nothing written\n";
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "error: " << e.what() << "; nothing written\n";
+  }
+  return 1;
 }

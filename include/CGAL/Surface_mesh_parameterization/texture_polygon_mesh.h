@@ -198,7 +198,7 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
       uv[graph.members[c][k]] = component_uv[c][k];
   }
   if(r.point_components == r.components)
-    return finish(ERROR_WRONG_PARAMETER, "the mesh has zero extent: every vertex on a face is at the same position");
+    return finish(ERROR_WRONG_PARAMETER, "the mesh has zero extent: the vertices of each component are at one position");
 
   NP::lay_out_components(uv, graph.component, r.components);
   std::vector<std::array<double, 2> > on_faces;
