@@ -50,7 +50,11 @@ endfunction()
 # refused() on a file `name` of the given content (the strings after `name`, joined), written to
 # out_<name without extension>.
 function(refused_file expected_output name)
-  string(CONCAT content ${ARGN})
+  set(content "")
+  math(EXPR last "${ARGC} - 1")
+  foreach(i RANGE 2 ${last})
+    string(APPEND content "${ARGV${i}}")
+  endforeach()
   file(WRITE "${WORK}/${name}" "${content}")
   get_filename_component(stem "${name}" NAME_WE)
   refused("cannot read .*${name}: ${expected_output}" ${name} out_${stem})
@@ -109,6 +113,9 @@ refused("error: .*the file has 2904 vertices" "${MESHES}/cow.off" out_farpair --
 refused_file("not a readable ply file: its vertex coordinate x is of type int" int_coordinates.ply
              "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty int y\nproperty int z\n"
              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+refused_file("not a readable ply file: a property is declared before any element" orphan.ply
+             "ply\nformat ascii 1.0\nproperty float x\nelement vertex 3\nproperty float x\nproperty float y\n"
+             "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n")
 refused_file("not a readable ply file: its vertices have no z coordinate" no_z.ply
              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0\n1 0\n0 1\n3 0 1 2\n")
@@ -130,16 +137,20 @@ if(EXISTS "${WORK}/not_there")
 endif()
 file(MAKE_DIRECTORY "${WORK}/blocked_uv.svg")
 run(1 "cannot write .*blocked_uv.svg is a directory; nothing written" "${MESHES}/cube_quad.off" blocked)
-foreach(suffix .obj .mtl .png _report.txt)
-  if(EXISTS "${WORK}/blocked${suffix}")
-    message(FATAL_ERROR "a refused write left blocked${suffix} behind")
-  endif()
-endforeach()
+file(GLOB left "${WORK}/blocked.*")
+if(left)
+  message(FATAL_ERROR "a refused write left files behind: ${left}")
+endif()
 file(WRITE "${WORK}/kept.partial/mine.txt" "not the tool's\n")
 run(0 "wrote kept.obj" "${MESHES}/cube_quad.off" kept)
-if(NOT EXISTS "${WORK}/kept.partial/mine.txt")
-  message(FATAL_ERROR "the tool removed a kept.partial directory it had not made")
+file(GLOB left "${WORK}/kept.partial.*")
+if(NOT EXISTS "${WORK}/kept.partial/mine.txt" OR left)
+  message(FATAL_ERROR "the tool removed a kept.partial directory it had not made, or left its own: ${left}")
 endif()
+# A PLY whose elements are named "vertices" and "faces" (CGAL reads it) is not refused.
+file(WRITE "${WORK}/plural.ply" "ply\nformat ascii 1.0\nelement vertices 3\nproperty float x\nproperty float y\n"
+     "property float z\nelement faces 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+run(0 "wrote plural.obj" plural.ply plural)
 
 # Every defect of real files is textured with the default options.
 # Two triangles that share only a vertex (a bow tie).

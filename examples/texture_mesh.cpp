@@ -158,16 +158,21 @@ std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
   return std::nullopt;
 }
 
+// The standard error's own buffer, taken before any work can redirect std::cerr (the reader's
+// messages are captured on the work's thread while the progress is shown).
+std::streambuf* const terminal_buffer = std::cerr.rdbuf();
+
 // Runs `work` and, when it takes more than a second, shows the elapsed time on stderr.
 template <typename Work>
 auto with_progress(const std::string& what, Work work)
 {
+  std::ostream terminal(terminal_buffer);
   auto result = std::async(std::launch::async, work);
   int seconds = 0;
   while(result.wait_for(std::chrono::seconds(1)) != std::future_status::ready)
-    std::cerr << "\r" << what << "... " << ++seconds << " s" << std::flush;
+    terminal << "\r" << what << "... " << ++seconds << " s" << std::flush;
   if(seconds > 0)
-    std::cerr << "\r" << what << ": done in about " << seconds << " s\n";
+    terminal << "\r" << what << ": done in about " << seconds << " s\n";
   return result.get();
 }
 
@@ -195,39 +200,56 @@ SMP::Error_code texture(const Soup& soup, UV& uv, const Settings& s, SMP::Textur
 }
 
 // Why CGAL 5.5's PLY soup reader cannot read the vertices of the file at `path`, if it cannot:
-// it reads a missing x, y or z as 0, and crashes on coordinates that are not floating point.
+// it reads a missing x, y or z as 0, and crashes on coordinates that are not floating point or
+// on a property declared before any element.
 std::optional<std::string> ply_vertex_problem(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
   std::string line, word;
-  if(!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
+  if(!std::getline(in, line) || !(std::istringstream(line) >> word) || word != "ply")
     return std::nullopt; // not a PLY header: the reader says what is wrong
-  bool in_vertex = false;
-  std::map<std::string, std::string> types; // of the vertex element's scalar properties
-  for(int k = 0; k < 10000 && std::getline(in, line); ++k) // a header, not the whole file
+  bool in_element = false, in_vertex = false;
+  std::map<std::string, std::string> types; // of the current vertex element's scalar properties, the first of a name
+  auto vertex_problem = [&]() -> std::optional<std::string> {
+    for(const std::string axis : {"x", "y", "z"})
+    {
+      const auto type = types.find(axis);
+      if(type == types.end())
+        return "its vertices have no " + axis + " coordinate";
+      if(type->second != "float" && type->second != "float32" && type->second != "double" && type->second != "float64")
+        return "its vertex coordinate " + axis + " is of type " + type->second + " (CGAL 5.5 reads float and double)";
+    }
+    return std::nullopt;
+  };
+  while(std::getline(in, line))
   {
     std::istringstream words(line);
-    if(!(words >> word))
+    if(!(words >> word) || (word != "element" && word != "property" && word != "end_header"))
       continue;
-    if(word == "end_header")
-    {
-      for(const std::string axis : {"x", "y", "z"})
-      {
-        const auto type = types.find(axis);
-        if(type == types.end())
-          return "its vertices have no " + axis + " coordinate";
-        if(type->second != "float" && type->second != "float32" && type->second != "double" && type->second != "float64")
-          return "its vertex coordinate " + axis + " is of type " + type->second + " (CGAL 5.5 reads float and double)";
-      }
-      return std::nullopt;
-    }
+    if(word == "property" && !in_element)
+      return std::string("a property is declared before any element");
+    if(word != "property" && in_vertex) // the vertex element ends here
+      if(const std::optional<std::string> problem = vertex_problem())
+        return problem;
     std::string type, name;
-    if(word == "element" && words >> name)
-      in_vertex = name == "vertex";
-    else if(word == "property" && in_vertex && words >> type >> name && type != "list")
-      types[name] = type;
+    if(word == "end_header")
+      return std::nullopt;
+    if(word == "element")
+    {
+      in_element = true;
+      in_vertex = words >> name && (name == "vertex" || name == "vertices");
+      types.clear();
+    }
+    else if(in_vertex && words >> type >> name && type != "list")
+      types.emplace(name, type);
   }
   return std::nullopt; // no end of the header: the reader says what is wrong
+}
+
+// The first line of `text` (an exception's message may hold several).
+std::string first_line(const std::string& text)
+{
+  return text.substr(0, text.find('\n'));
 }
 
 // The standard streams captured while it lives (a reader's messages), restored even when the
@@ -274,8 +296,8 @@ std::optional<std::string> read_soup(const std::string& path, Soup& soup)
     if(const std::optional<std::string> problem = ply_vertex_problem(path))
       return "not a readable ply file: " + *problem;
   // The reader says why it failed on the standard streams: keep its first line that names an
-  // error, else its first that is not a progress line ("Parsing ASCII file..."). It throws on
-  // some malformed counts.
+  // error, else its first that is not blank, a progress line ("Parsing ASCII file...") or a
+  // binary STL's header. It throws on some malformed counts.
   Captured_streams said;
   bool read = false;
   try
@@ -292,7 +314,7 @@ std::optional<std::string> read_soup(const std::string& path, Soup& soup)
   }
   catch(const std::exception& e)
   {
-    return "not a valid " + format + " file: the reader failed (" + e.what() + ")";
+    return "not a valid " + format + " file: the reader failed (" + first_line(e.what()) + ")";
   }
   if(read && !soup.polygons.empty())
     return std::nullopt;
@@ -304,39 +326,76 @@ std::optional<std::string> read_soup(const std::string& path, Soup& soup)
       reason = line;
       break;
     }
-    else if(reason.empty() && line.compare(0, 7, "Parsing") != 0)
+    else if(reason.empty() && line.find_first_not_of(" \t\r") != std::string::npos &&
+            line.compare(0, 7, "Parsing") != 0 && line.compare(0, 7, "header:") != 0)
       reason = line;
   if(read || (!soup.points.empty() && soup.polygons.empty() && reason.find("empty") != std::string::npos))
     return "the " + format + " file has no face";
   return "not a valid " + format + " file" + (reason.empty() ? std::string() : ": " + reason);
 }
 
-// Writes every output file into a new scratch directory beside them, then moves them in place:
-// on any failure nothing is left behind, and the reason is returned.
+// The five files the tool writes: their directory and names.
+struct Output_files
+{
+  fs::path directory;
+  std::string stem;
+  std::vector<std::string> names;
+};
+
+Output_files output_files(const std::string& basename)
+{
+  const fs::path target = fs::absolute(basename);
+  const std::string stem = target.filename().string();
+  return {target.parent_path(), stem, {stem + ".obj", stem + ".mtl", stem + ".png", stem + "_uv.svg", stem + "_report.txt"}};
+}
+
+// Why the files cannot be written, if that is known before writing them.
+std::optional<std::string> output_problem(const Output_files& files)
+{
+  std::error_code ec;
+  if(!fs::exists(files.directory, ec))
+    return "no such directory: " + files.directory.string();
+  if(!fs::is_directory(files.directory, ec))
+    return "not a directory: " + files.directory.string();
+  for(const std::string& name : files.names)
+    if(fs::is_directory(files.directory / name, ec))
+      return (files.directory / name).string() + " is a directory";
+  return std::nullopt;
+}
+
+// A directory this run created, removed with what it holds when it goes out of scope.
+struct Scratch_directory
+{
+  fs::path path;
+  ~Scratch_directory()
+  {
+    std::error_code ec;
+    if(!path.empty())
+      fs::remove_all(path, ec);
+  }
+};
+
+// Writes every output file into a new scratch directory beside them, then moves them in place
+// (replacing files of the same names): on any failure nothing of this run is left behind, and
+// the reason is returned.
 std::optional<std::string> write_outputs(const Settings& s, const Soup& soup, const UV& uv,
                                          const std::vector<char>& has_uv, const std::string& report)
 {
-  const fs::path target = fs::absolute(s.output);
-  const fs::path directory = target.parent_path();
-  const std::string stem = target.filename().string();
-  const std::vector<std::string> names = {stem + ".obj", stem + ".mtl", stem + ".png", stem + "_uv.svg",
-                                          stem + "_report.txt"};
+  const Output_files files = output_files(s.output);
+  if(const std::optional<std::string> problem = output_problem(files))
+    return problem;
   std::error_code ec;
-  if(!fs::is_directory(directory, ec))
-    return "no such directory: " + directory.string();
-  for(const std::string& name : names)
-    if(fs::is_directory(directory / name, ec))
-      return (directory / name).string() + " is a directory";
-  fs::path scratch; // stem.partial, or stem.partial.1, ...: one this run creates
-  for(int k = 0; scratch.empty(); ++k)
+  Scratch_directory scratch; // stem.partial, or stem.partial.1, ...
+  for(int k = 0; scratch.path.empty(); ++k)
   {
-    const fs::path candidate = directory / (stem + ".partial" + (k > 0 ? "." + std::to_string(k) : std::string()));
+    const fs::path candidate =
+      files.directory / (files.stem + ".partial" + (k > 0 ? "." + std::to_string(k) : std::string()));
     if(fs::create_directory(candidate, ec))
-      scratch = candidate;
-    else if(ec || k == 100)
-      return "cannot create a directory in " + directory.string();
+      scratch.path = candidate;
+    else if((ec && ec != std::errc::file_exists) || k == 100)
+      return "cannot create a directory in " + files.directory.string() + (ec ? ": " + ec.message() : std::string());
   }
-  std::ofstream text((scratch / names[4]).string());
+  std::ofstream text((scratch.path / files.names[4]).string());
   text << report;
   text.close();
   std::vector<std::vector<std::array<double, 2> > > layout;
@@ -347,21 +406,28 @@ std::optional<std::string> write_outputs(const Settings& s, const Soup& soup, co
       for(std::size_t i : polygon)
         layout.back().push_back({uv[i].x(), uv[i].y()});
     }
-  bool ok = bool(text) && np_examples::write_textured_obj((scratch / stem).string(), soup.points, soup.polygons, uv) &&
-            np_examples::write_uv_layout_svg((scratch / names[3]).string(), layout);
-  std::size_t moved = 0;
-  while(ok && moved < names.size())
+  if(!text || !np_examples::write_textured_obj((scratch.path / files.stem).string(), soup.points, soup.polygons, uv) ||
+     !np_examples::write_uv_layout_svg((scratch.path / files.names[3]).string(), layout))
+    return "cannot write into " + scratch.path.string();
+  for(std::size_t k = 0; k < files.names.size(); ++k)
   {
-    fs::rename(scratch / names[moved], directory / names[moved], ec);
-    ok = !ec;
-    moved += ok;
+    fs::rename(scratch.path / files.names[k], files.directory / files.names[k], ec);
+    if(ec)
+    {
+      const std::string reason = "cannot move " + files.names[k] + " into place: " + ec.message();
+      for(std::size_t moved = 0; moved < k; ++moved)
+        fs::remove(files.directory / files.names[moved], ec);
+      return reason;
+    }
   }
-  for(std::size_t k = 0; !ok && k < moved; ++k)
-    fs::remove(directory / names[k], ec);
-  fs::remove_all(scratch, ec);
-  if(!ok)
-    return "cannot write into " + directory.string();
   return std::nullopt;
+}
+
+// Says on stderr why the output files cannot be written; the exit status.
+int cannot_write(const Settings& s, const std::string& why)
+{
+  std::cerr << "error: cannot write " << s.output << ".obj/.mtl/.png/_uv.svg/_report.txt: " << why << "; nothing written\n";
+  return 1;
 }
 
 // The tool; main() turns what escapes it (a reader's or the allocator's exception) into exit 1.
@@ -379,6 +445,8 @@ int run(int argc, char** argv)
     std::cout << usage;
     return 0;
   }
+  if(const std::optional<std::string> problem = output_problem(output_files(s.output)))
+    return cannot_write(s, *problem); // known before the work
 
   Soup soup;
   const std::optional<std::string> unread = with_progress("reading " + s.input, [&] { return read_soup(s.input, soup); });
@@ -466,11 +534,7 @@ int run(int argc, char** argv)
           << "face corners dropped as repeats: " << report.repeated_corners << '\n'
           << "components of zero extent (mapped to a point): " << report.point_components << '\n';
   if(const auto unwritten = with_progress("writing " + s.output, [&] { return write_outputs(s, soup, uv, has_uv, details.str()); }))
-  {
-    std::cerr << "error: cannot write " << s.output << ".obj/.mtl/.png/_uv.svg/_report.txt: " << *unwritten
-              << "; nothing written\n";
-    return 1;
-  }
+    return cannot_write(s, *unwritten);
   std::cout << summary.str() << "wrote " << s.output << ".obj, .mtl, .png, _uv.svg, _report.txt\n";
   return 0;
 }
@@ -487,7 +551,11 @@ int main(int argc, char** argv)
   }
   catch(const std::exception& e)
   {
-    std::cerr << "error: " << e.what() << "; nothing written\n";
+    std::cerr << "error: " << first_line(e.what()) << "; nothing written\n";
+  }
+  catch(...)
+  {
+    std::cerr << "error: an unknown failure; nothing written\n";
   }
   return 1;
 }
