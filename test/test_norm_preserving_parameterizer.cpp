@@ -682,6 +682,69 @@ TEST(TwoColumnCholesky, SolvesLikeEigenAndSplitsLargeFactors)
   }
 }
 
+// The free-vertex Laplacian, written in compressed form column by column, is the one Eigen
+// assembles from a triplet per entry (the diagonal, the degree; -1 per edge between free
+// vertices), its rows sorted in each column.
+TEST(TwoColumnCholesky, LaplacianIsTheOneOfItsTriplets)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  for(const std::string name : {"nefertiti", "cow"})
+  {
+    const SMP::Norm_preserving_geometry geometry = component_geometry(np_test::load_mesh(name));
+    const std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{geometry.edges[3][0], {0., 0.}},
+                                                   NP::Fixed_vertex{geometry.edges[3][1], {1., 0.}}};
+    const std::vector<int> free_index = NP::free_vertex_indices(geometry.points.size(), fixed);
+    const NP::Sparse_matrix lower = NP::free_vertex_laplacian(geometry, free_index);
+    std::vector<Eigen::Triplet<double> > triplets;
+    for(const auto& e : geometry.edges)
+    {
+      const int fi = free_index[e[0]], fj = free_index[e[1]];
+      if(fi >= 0) triplets.emplace_back(fi, fi, 1.);
+      if(fj >= 0) triplets.emplace_back(fj, fj, 1.);
+      if(fi >= 0 && fj >= 0) triplets.emplace_back((std::max)(fi, fj), (std::min)(fi, fj), -1.);
+    }
+    NP::Sparse_matrix expected(lower.rows(), lower.cols());
+    expected.setFromTriplets(triplets.begin(), triplets.end());
+    ASSERT_TRUE(lower.isCompressed()) << name;
+    ASSERT_EQ(lower.nonZeros(), expected.nonZeros()) << name;
+    EXPECT_TRUE(std::equal(lower.outerIndexPtr(), lower.outerIndexPtr() + lower.cols() + 1, expected.outerIndexPtr())) << name;
+    EXPECT_TRUE(std::equal(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros(), expected.innerIndexPtr())) << name;
+    EXPECT_TRUE(std::equal(lower.valuePtr(), lower.valuePtr() + lower.nonZeros(), expected.valuePtr())) << name;
+  }
+}
+
+// A right-hand side given in the factor's order (the ADMM's mesh step) is solved like Eigen's
+// LDL' solve of the matrix, on the Eigen factor (cow, split into parts) and, configured with
+// CHOLMOD, on CHOLMOD's (bunny00); again in the same vector, whose tail the first solve filled.
+TEST(TwoColumnCholesky, SolvesInItsOwnOrder)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  for(const std::string name : {"cow", "bunny00"})
+  {
+    const NP::Sparse_matrix lower = free_laplacian(np_test::load_mesh(name));
+    const std::size_t n = std::size_t(lower.rows());
+    NP::Two_column_cholesky cholesky;
+    ASSERT_TRUE(cholesky.compute(lower)) << name;
+    Eigen::SimplicialLDLT<NP::Sparse_matrix, Eigen::Lower> ldlt(lower);
+    ASSERT_EQ(ldlt.info(), Eigen::Success);
+    std::vector<double> y;
+    for(double scale : {1., -3.})
+    {
+      const Eigen::MatrixXd b = scale * two_right_hand_sides(lower.rows()), x = ldlt.solve(b);
+      y.resize((std::max)(y.size(), 2 * n)); // the second time, longer: the tail is left as it was
+      for(std::size_t i = 0; i < n; ++i)
+        for(int c = 0; c < 2; ++c)
+          y[2 * std::size_t(cholesky.positions()[i]) + std::size_t(c)] = b(Eigen::Index(i), c);
+      cholesky.solve_in_order(y);
+      double error = 0;
+      for(std::size_t i = 0; i < n; ++i)
+        for(int c = 0; c < 2; ++c)
+          error = (std::max)(error, std::abs(y[2 * std::size_t(cholesky.positions()[i]) + std::size_t(c)] - x(Eigen::Index(i), c)));
+      EXPECT_LT(error, 1e-9 * x.cwiseAbs().maxCoeff()) << name << " " << scale;
+    }
+  }
+}
+
 // Where AMD's elimination tree holds most of the factor in one subtree (blade: a solve's
 // longest path holds about 90% of the factor), the factor is in a level-set dissection's
 // order, whose parts are balanced; where AMD's tree splits well (lion), in AMD's order. Both

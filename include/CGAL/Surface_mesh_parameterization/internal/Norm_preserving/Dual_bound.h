@@ -40,9 +40,11 @@ inline double edge_dual_term(double l, double ya, double yb)
 }
 
 // The dual function at the multiplier estimate `y` (per edge, for a and b) made feasible;
-// `uv` holds the fixed vertices' values, and a point for the rounding term.
+// `uv` holds the fixed vertices' values, and a point for the rounding term. `row` gives
+// each free vertex's row in the order of the factored `laplacian` (-1 at the fixed ones), and
+// `incidence` is numbered by it.
 inline double sign_constrained_dual_bound(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
-                                          const Edge_signs& signs, const std::vector<int>& free_index,
+                                          const Edge_signs& signs, const std::vector<int>& row,
                                           const Free_vertex_edges& incidence, const Two_column_cholesky& laplacian,
                                           const UV_vector& uv, std::vector<std::array<double, 2> > y)
 {
@@ -51,7 +53,7 @@ inline double sign_constrained_dual_bound(const Norm_preserving_geometry& geomet
   std::vector<std::array<double, 2> > values(m);
   std::vector<double> t(2 * free_count);
   auto free_value = [&](const std::vector<double>& x, std::size_t i, int c) {
-    return free_index[i] >= 0 ? x[2 * std::size_t(free_index[i]) + std::size_t(c)] : 0.;
+    return row[i] >= 0 ? x[2 * std::size_t(row[i]) + std::size_t(c)] : 0.;
   };
   auto apply_transpose = [&](std::vector<double>& result) { // result = A'y, per free vertex
     for(std::size_t e = 0; e < m; ++e)
@@ -60,7 +62,7 @@ inline double sign_constrained_dual_bound(const Norm_preserving_geometry& geomet
     gather_edge_values(incidence, values, result);
   };
   apply_transpose(t);
-  laplacian.solve(t);
+  laplacian.solve_in_order(t);
   for(std::size_t e = 0; e < m; ++e)
     for(int c = 0; c < 2; ++c)
       y[e][c] -= signs[e][c] * (free_value(t, geometry.edges[e][0], c) - free_value(t, geometry.edges[e][1], c));
@@ -69,15 +71,15 @@ inline double sign_constrained_dual_bound(const Norm_preserving_geometry& geomet
   apply_transpose(residual);
   double bound = 0;
   for(std::size_t i = 0; i < uv.size(); ++i)
-    if(free_index[i] >= 0)
+    if(row[i] >= 0)
       for(int c = 0; c < 2; ++c)
-        bound += residual[2 * std::size_t(free_index[i]) + std::size_t(c)] * uv[i][c];
+        bound += residual[2 * std::size_t(row[i]) + std::size_t(c)] * uv[i][c];
   for(std::size_t e = 0; e < m; ++e)
   {
     const std::size_t i = geometry.edges[e][0], j = geometry.edges[e][1];
     for(int c = 0; c < 2; ++c)
     {
-      const double fixed_part = (free_index[i] < 0 ? uv[i][c] : 0.) - (free_index[j] < 0 ? uv[j][c] : 0.);
+      const double fixed_part = (row[i] < 0 ? uv[i][c] : 0.) - (row[j] < 0 ? uv[j][c] : 0.);
       bound += y[e][c] * signs[e][c] * fixed_part;
     }
     bound += edge_dual_term(lengths[e], y[e][0], y[e][1]);

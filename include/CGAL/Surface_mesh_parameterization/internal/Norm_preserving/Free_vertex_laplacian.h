@@ -12,6 +12,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FREE_VERTEX_LAPLACIAN_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FREE_VERTEX_LAPLACIAN_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
@@ -37,21 +38,44 @@ inline std::vector<int> free_vertex_indices(std::size_t n, const std::array<Fixe
   return free_index;
 }
 
-// Lower triangle of the unit-weight graph Laplacian among the free vertices.
+// Lower triangle of the unit-weight graph Laplacian among the free vertices (`free_index` of
+// free_vertex_indices(): increasing), written in compressed form: the edges, sorted, give each
+// column's rows in order (setFromTriplets() took 3 times as long, most of it in its triplets'
+// fresh pages and its two copies: doc/performance.md, change 31).
 inline Sparse_matrix free_vertex_laplacian(const Norm_preserving_geometry& geometry, const std::vector<int>& free_index)
 {
   const int free_count = int(std::count_if(free_index.begin(), free_index.end(), [](int i) { return i >= 0; }));
-  std::vector<Eigen::Triplet<double> > triplets;
-  triplets.reserve(3 * geometry.edges.size());
+  Sparse_matrix laplacian(free_count, free_count);
+  int* start = laplacian.outerIndexPtr(); // zeros
+  std::vector<int> degree(std::size_t(free_count), 0);
   for(const auto& e : geometry.edges)
   {
     const int fi = free_index[e[0]], fj = free_index[e[1]];
-    if(fi >= 0) triplets.emplace_back(fi, fi, 1.);
-    if(fj >= 0) triplets.emplace_back(fj, fj, 1.);
-    if(fi >= 0 && fj >= 0) triplets.emplace_back((std::max)(fi, fj), (std::min)(fi, fj), -1.);
+    if(fi >= 0) ++degree[std::size_t(fi)];
+    if(fj >= 0) ++degree[std::size_t(fj)];
+    if(fi >= 0 && fj >= 0) ++start[fi + 1]; // row fj > fi of column fi
   }
-  Sparse_matrix laplacian(free_count, free_count);
-  laplacian.setFromTriplets(triplets.begin(), triplets.end());
+  for(int c = 0; c < free_count; ++c)
+    start[c + 1] += start[c] + 1; // and the diagonal
+  laplacian.resizeNonZeros(start[free_count]);
+  int* rows = laplacian.innerIndexPtr();
+  double* values = laplacian.valuePtr();
+  std::vector<int> next(start, start + free_count);
+  for(int c = 0; c < free_count; ++c)
+  {
+    rows[next[std::size_t(c)]] = c;
+    values[next[std::size_t(c)]++] = double(degree[std::size_t(c)]);
+  }
+  for(const auto& e : geometry.edges)
+  {
+    const int fi = free_index[e[0]], fj = free_index[e[1]];
+    if(fi >= 0 && fj >= 0)
+    {
+      CGAL_assertion(fi < fj);
+      rows[next[std::size_t(fi)]] = fj;
+      values[next[std::size_t(fi)]++] = -1.;
+    }
+  }
   return laplacian;
 }
 

@@ -284,8 +284,14 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   for(double l : lengths) l1_norm += l * l;
   l1_norm = (std::max)(std::sqrt(l1_norm), std::numeric_limits<double>::min());
 
+  // The mesh step's right-hand side is gathered, solved and read in the factor's order: the
+  // row of each free vertex there (-1 at the fixed ones).
+  std::vector<int> row(n, -1);
+  for(std::size_t i = 0; i < n; ++i)
+    if(free_index[i] >= 0)
+      row[i] = cholesky.positions()[std::size_t(free_index[i])];
   std::vector<double> rhs(2 * std::size_t(free_count)); // u and v interleaved
-  const Free_vertex_edges incidence = free_vertex_edges(geometry, free_index);
+  const Free_vertex_edges incidence = free_vertex_edges(geometry, row);
   std::vector<std::array<double, 2> > edge_values(m); // wished differences, then changes of z
   // The edges with a fixed end, whose wished differences also carry the fixed values to the
   // right-hand side (the mesh step's loop over all edges then reads no vertex data).
@@ -327,7 +333,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     return y;
   };
   auto dual_bound = [&]() {
-    return sign_constrained_dual_bound(geometry, lengths, signs, free_index, incidence, cholesky, feasible, multipliers());
+    return sign_constrained_dual_bound(geometry, lengths, signs, row, incidence, cholesky, feasible, multipliers());
   };
   // The optimum on the active set of z, corrected a few times; true if certified within the
   // tolerance, then it replaces `feasible`. In the certified mode a try that ends at a KKT
@@ -354,7 +360,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
       projection.apply(projected);
       const double f = sign_constrained_objective(geometry, lengths, signs, projected);
       const double gap =
-        relative_gap(f, sign_constrained_dual_bound(geometry, lengths, signs, free_index, incidence, cholesky, projected, y), scale);
+        relative_gap(f, sign_constrained_dual_bound(geometry, lengths, signs, row, incidence, cholesky, projected, y), scale);
       if(gap <= settings.tolerance)
       {
         feasible.swap(projected);
@@ -451,10 +457,10 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
       for(int c = 0; c < 2; ++c)
         edge_values[e][c] = free_edge_difference(free_index, geometry.edges[e][0], geometry.edges[e][1], c, edge_values[e][c], uv);
     gather_edge_values(incidence, edge_values, rhs);
-    cholesky.solve(rhs);
+    cholesky.solve_in_order(rhs);
     for(std::size_t i = 0; i < n; ++i)
-      if(free_index[i] >= 0)
-        uv[i] = {rhs[2 * std::size_t(free_index[i])], rhs[2 * std::size_t(free_index[i]) + 1]};
+      if(row[i] >= 0)
+        uv[i] = {rhs[2 * std::size_t(row[i])], rhs[2 * std::size_t(row[i]) + 1]};
 
     // Edge step (over-relaxed) and multiplier step; at a check, the changes of z kept.
     const bool check = k % check_every == 0 || k == settings.max_iterations;
@@ -488,7 +494,10 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     for(double p : block_primal) primal += p;
     gather_edge_values(incidence, edge_values, rhs); // D' times the change of z
     double dual = 0;
-    for(double d : rhs) dual += d * d;
+    for(std::size_t i = 0; i < n; ++i) // in vertex order
+      if(row[i] >= 0)
+        for(int c = 0; c < 2; ++c)
+          dual += rhs[2 * std::size_t(row[i]) + std::size_t(c)] * rhs[2 * std::size_t(row[i]) + std::size_t(c)];
     result.iterations = k;
     result.primal_residual = std::sqrt(primal) / l1_norm;
     result.dual_residual = std::sqrt(dual) / l1_norm;

@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <mutex>
 #include <utility>
 #include <numeric>
@@ -71,10 +72,10 @@ public:
     double work = 0;
     for(std::size_t j = 0; j < result.m_n; ++j)
     {
-      const double count = double(result.m_first[j + 1] - result.m_first[j]);
+      const double count = double(result.factor_starts()[j + 1] - result.factor_starts()[j]);
       work += count * count;
     }
-    result.m_work_per_entry = work / double((std::max)(result.m_first[result.m_n], 1));
+    result.m_work_per_entry = work / double((std::max)(result.factor_starts()[result.m_n], 1));
     result.form_supernodes(result.apply_split(split));
     *this = std::move(result);
     return true;
@@ -83,15 +84,29 @@ public:
   // Solves A X = B in place for the two interleaved columns of `b` (size 2n).
   void solve(std::vector<double>& b) const
   {
-    const std::size_t top = m_top.size();
-    std::vector<double>& y = m_work; // the n unknowns, then the parts' slots for the top
-    y.resize(2 * (m_n + part_count * top));
-    std::fill(y.begin() + std::ptrdiff_t(2 * m_n), y.end(), 0.); // the unknowns are all written below
+    std::vector<double>& y = m_work;
+    y.resize(2 * m_n);
     for(std::size_t i = 0; i < m_n; ++i)
     {
       y[2 * std::size_t(m_position[i])] = b[2 * i];
       y[2 * std::size_t(m_position[i]) + 1] = b[2 * i + 1];
     }
+    solve_in_order(y);
+    for(std::size_t i = 0; i < m_n; ++i)
+    {
+      b[2 * i] = y[2 * std::size_t(m_position[i])];
+      b[2 * i + 1] = y[2 * std::size_t(m_position[i]) + 1];
+    }
+  }
+
+  // solve() for `y` given and returned in the factor's order (unknown i at row positions()[i]),
+  // without the two passes that permute it: its first 2n entries are the columns; it may grow
+  // (the parts' slots for the top follow them).
+  void solve_in_order(std::vector<double>& y) const
+  {
+    const std::size_t top = m_top.size();
+    y.resize(2 * (m_n + part_count * top));
+    std::fill(y.begin() + std::ptrdiff_t(2 * m_n), y.end(), 0.);
     // L y = P b: the parts, their updates of the top gathered, then the top.
     const std::size_t parts = m_part_supernodes.empty() ? 0 : part_count; // a small factor is all top
     parallel_for_each_index(parts, [&](std::size_t p) {
@@ -115,11 +130,6 @@ public:
       for(int k = m_part_first[p + 1]; k-- > m_part_first[p];)
         backward_supernode(m_supernodes[std::size_t(m_part_supernodes[std::size_t(k)])], y);
     });
-    for(std::size_t i = 0; i < m_n; ++i)
-    {
-      b[2 * i] = y[2 * std::size_t(m_position[i])];
-      b[2 * i + 1] = y[2 * std::size_t(m_position[i]) + 1];
-    }
   }
 
   // The position of each unknown in the order the factor eliminates them.
@@ -166,7 +176,7 @@ private:
   struct Supernode
   {
     int column, width;          // its first column, the number of its columns
-    int rows_begin, rows_end;   // its rows below the triangle, in m_rows
+    int rows_begin, rows_end;   // its rows below the triangle, in factor_rows()
     std::size_t values;         // the triangle by columns, then each row's `width` entries
   };
 
@@ -217,23 +227,26 @@ private:
     // The supernodes' padding comes over as explicit zeros: leave them out (counted first, so
     // that the kept entries are allocated once: 1.48 GiB peak at 590k vertices, not 1.76).
     auto kept = [&](int j, int k) { return k == first[j] || values[k] != 0; };
-    m_first.assign(m_n + 1, 0);
+    m_factor.reset(new Sparse_matrix(int(m_n), int(m_n)));
+    int* kept_first = m_factor->outerIndexPtr();
+    kept_first[0] = 0;
     for(std::size_t j = 0; j < m_n; ++j)
     {
-      m_first[j + 1] = m_first[j];
+      kept_first[j + 1] = kept_first[j];
       for(int k = first[j]; k < first[j + 1]; ++k)
-        m_first[j + 1] += kept(int(j), k) ? 1 : 0;
+        kept_first[j + 1] += kept(int(j), k) ? 1 : 0;
     }
-    m_rows.resize(std::size_t(m_first[m_n]));
-    m_values.resize(std::size_t(m_first[m_n]));
+    m_factor->resizeNonZeros(kept_first[m_n]);
+    int* kept_rows = factor_rows();
+    double* kept_values = factor_values();
     for(std::size_t j = 0; j < m_n; ++j)
     {
-      std::size_t next = std::size_t(m_first[j]);
+      std::size_t next = std::size_t(kept_first[j]);
       for(int k = first[j]; k < first[j + 1]; ++k)
         if(kept(int(j), k))
         {
-          m_rows[next] = rows[k];
-          m_values[next++] = values[k];
+          kept_rows[next] = rows[k];
+          kept_values[next++] = values[k];
         }
     }
     m_position.resize(m_n);
@@ -289,6 +302,10 @@ private:
       return this->info() == Eigen::Success;
     }
 
+    // Moves the factor (by columns, diagonal first) into `factor`: its storage, not a copy,
+    // whose fresh pages cost 10-20% of a small mesh's factorization (doc/performance.md, change 31).
+    void take_factor(Sparse_matrix& factor) { factor.swap(this->m_matrix); }
+
     double entries = 0, work = 0; // of the factor, and the work of factoring (factorization_work_per_entry())
     Tree_split split;
 
@@ -335,11 +352,9 @@ private:
     if(!llt.factor())
       return false;
     split = std::move(llt.split);
-    const Sparse_matrix& factor = llt.matrixL().nestedExpression();
-    m_first.assign(factor.outerIndexPtr(), factor.outerIndexPtr() + m_n + 1);
-    m_rows.assign(factor.innerIndexPtr(), factor.innerIndexPtr() + m_first[m_n]);
-    m_values.assign(factor.valuePtr(), factor.valuePtr() + m_first[m_n]);
     m_position.assign(position.data(), position.data() + m_n);
+    m_factor.reset(new Sparse_matrix());
+    llt.take_factor(*m_factor);
     return true;
   }
 
@@ -349,7 +364,7 @@ private:
   void forward_supernode(const Supernode& s, std::vector<double>& y) const
   {
     const int w = s.width;
-    const double* entry = &m_values[s.values];
+    const double* entry = &factor_values()[s.values];
     double* own = &y[2 * std::size_t(s.column)];
     for(int c = 0; c < w; ++c)
     {
@@ -368,7 +383,7 @@ private:
   {
     const int w = s.width;
     for_column_groups(w, [&](auto width, int first) { backward_rows<decltype(width)::value>(s, first, y); });
-    const double* triangle = &m_values[s.values];
+    const double* triangle = &factor_values()[s.values];
     double* own = &y[2 * std::size_t(s.column)];
     for(int c = w; c-- > 0;)
     {
@@ -440,10 +455,11 @@ private:
       x0[c] = own[2 * c];
       x1[c] = own[2 * c + 1];
     }
-    const double* entry = &m_values[s.values + triangle_size(s.width) + std::size_t(first)];
+    const double* entry = &factor_values()[s.values + triangle_size(s.width) + std::size_t(first)];
+    const int* rows = factor_rows();
     for(int k = s.rows_begin; k < s.rows_end; ++k, entry += s.width)
     {
-      const std::size_t i = std::size_t(m_rows[std::size_t(k)]);
+      const std::size_t i = std::size_t(rows[k]);
       row(entry, y[2 * i], y[2 * i + 1], x0, x1);
     }
     for(int c = 0; c < W; ++c)
@@ -529,12 +545,14 @@ private:
   Tree_split tree_split() const
   {
     const std::size_t n = m_n;
+    const int* first = factor_starts();
+    const int* rows = factor_rows();
     std::vector<int> parent(n, -1);
     for(std::size_t j = 0; j < n; ++j)
-      for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k) // the rows may come in any order
-        if(parent[j] < 0 || m_rows[std::size_t(k)] < parent[j])
-          parent[j] = m_rows[std::size_t(k)];
-    return split_tree(n, parent, [&](std::size_t j) { return double(m_first[j + 1] - m_first[j]); });
+      for(int k = first[j] + 1; k < first[j + 1]; ++k) // the rows may come in any order
+        if(parent[j] < 0 || rows[std::size_t(k)] < parent[j])
+          parent[j] = rows[std::size_t(k)];
+    return split_tree(n, parent, [&](std::size_t j) { return double(first[j + 1] - first[j]); });
   }
 
   // Applies the split: renumbers the rows in the top of the parts' columns to the parts' slots
@@ -543,6 +561,8 @@ private:
   std::vector<int> apply_split(Tree_split& split)
   {
     const std::size_t n = m_n;
+    const int* first = factor_starts();
+    int* rows = factor_rows();
     std::vector<char>& in_top = split.in_top;
     const std::vector<int>& bin = split.part;
     // The tree was read off the factor's nonzeros: were an entry to cancel exactly, a row could
@@ -550,11 +570,11 @@ private:
     bool separate = true;
     for(std::size_t j = 0; j < n && separate; ++j)
       if(!in_top[j])
-        for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
-          separate = separate && (in_top[std::size_t(m_rows[k])] || bin[std::size_t(m_rows[k])] == bin[j]);
+        for(int k = first[j] + 1; k < first[j + 1]; ++k)
+          separate = separate && (in_top[std::size_t(rows[k])] || bin[std::size_t(rows[k])] == bin[j]);
     if(!separate)
       std::fill(in_top.begin(), in_top.end(), char(1));
-    m_longest_path_share = separate ? (split.top + split.heaviest) / double((std::max)(m_first[n], 1)) : 1.;
+    m_longest_path_share = separate ? (split.top + split.heaviest) / double((std::max)(first[n], 1)) : 1.;
 
     // Rows in the top of a part's columns are renumbered to the part's slots.
     std::vector<int> top_index(n, -1);
@@ -571,9 +591,9 @@ private:
       if(!in_top[j])
       {
         part[j] = bin[j];
-        for(int k = m_first[j] + 1; k < m_first[j + 1]; ++k)
-          if(in_top[std::size_t(m_rows[k])])
-            m_rows[k] = int(n + std::size_t(bin[j]) * top + std::size_t(top_index[std::size_t(m_rows[k])]));
+        for(int k = first[j] + 1; k < first[j + 1]; ++k)
+          if(in_top[std::size_t(rows[k])])
+            rows[k] = int(n + std::size_t(bin[j]) * top + std::size_t(top_index[std::size_t(rows[k])]));
       }
     return part;
   }
@@ -585,13 +605,15 @@ private:
   void form_supernodes(const std::vector<int>& part)
   {
     const std::size_t n = m_n;
+    const int* first = factor_starts();
+    int* rows = factor_rows();
+    double* values = factor_values();
     auto extends = [&](std::size_t j) { // column j + 1 continues the supernode of column j
-      const int count = m_first[j + 1] - m_first[j];
-      if(j + 1 >= n || part[j + 1] != part[j] || count < 2 || m_rows[std::size_t(m_first[j]) + 1] != int(j + 1)
-         || m_first[j + 2] - m_first[j + 1] != count - 1)
+      const int count = first[j + 1] - first[j];
+      if(j + 1 >= n || part[j + 1] != part[j] || count < 2 || rows[std::size_t(first[j]) + 1] != int(j + 1)
+         || first[j + 2] - first[j + 1] != count - 1)
         return false;
-      return std::equal(m_rows.begin() + m_first[j + 1] + 1, m_rows.begin() + m_first[j + 2],
-                        m_rows.begin() + m_first[j] + 2);
+      return std::equal(rows + first[j + 1] + 1, rows + first[j + 2], rows + first[j] + 2);
     };
     m_supernodes.clear();
     std::vector<double> rows_below; // one supernode's entries below its triangle, by rows
@@ -602,26 +624,24 @@ private:
       while(extends(last))
         ++last;
       const int width = int(last - j) + 1;
-      const int below = m_first[last + 1] - m_first[last] - 1;
-      Supernode s{int(j), width, kept_rows, kept_rows + below, std::size_t(m_first[j])};
-      for(int k = m_first[last] + 1; k < m_first[last + 1]; ++k) // forward: kept_rows <= k
-        m_rows[std::size_t(kept_rows++)] = m_rows[std::size_t(k)];
+      const int below = first[last + 1] - first[last] - 1;
+      Supernode s{int(j), width, kept_rows, kept_rows + below, std::size_t(first[j])};
+      for(int k = first[last] + 1; k < first[last + 1]; ++k) // forward: kept_rows <= k
+        rows[std::size_t(kept_rows++)] = rows[std::size_t(k)];
       rows_below.resize(std::size_t(width) * std::size_t(below));
       std::size_t triangle = s.values;
       for(int c = 0; c < width; ++c)
       {
-        const std::size_t column = std::size_t(m_first[j + std::size_t(c)]);
+        const std::size_t column = std::size_t(first[j + std::size_t(c)]);
         for(int r = 0; r < width - c; ++r)
-          m_values[triangle++] = m_values[column + std::size_t(r)];
+          values[triangle++] = values[column + std::size_t(r)];
         for(int k = 0; k < below; ++k)
-          rows_below[std::size_t(k) * std::size_t(width) + std::size_t(c)] = m_values[column + std::size_t(width - c + k)];
+          rows_below[std::size_t(k) * std::size_t(width) + std::size_t(c)] = values[column + std::size_t(width - c + k)];
       }
-      std::copy(rows_below.begin(), rows_below.end(), m_values.begin() + std::ptrdiff_t(triangle));
+      std::copy(rows_below.begin(), rows_below.end(), values + std::ptrdiff_t(triangle));
       m_supernodes.push_back(s);
       j = last + 1;
     }
-    m_rows.resize(std::size_t(kept_rows));
-    std::vector<int>().swap(m_first);
     m_part_first.assign(part_count + 2, 0);
     for(const Supernode& s : m_supernodes)
       ++m_part_first[std::size_t(part[std::size_t(s.column)]) + 1];
@@ -639,9 +659,15 @@ private:
   std::size_t m_n = 0;
   double m_work_per_entry = 0;
   double m_longest_path_share = 1;
-  std::vector<int> m_first;         // the simplicial factor by columns, diagonal first, until
-  std::vector<int> m_rows;          // form_supernodes() stores it by supernodes
-  std::vector<double> m_values;
+  // The simplicial factor by columns, diagonal first, until form_supernodes() stores it by
+  // supernodes in place (then the column starts, factor_starts(), are left unused).
+  std::unique_ptr<Sparse_matrix> m_factor;
+  int* factor_starts() { return m_factor->outerIndexPtr(); }
+  const int* factor_starts() const { return m_factor->outerIndexPtr(); }
+  int* factor_rows() { return m_factor->innerIndexPtr(); }
+  const int* factor_rows() const { return m_factor->innerIndexPtr(); }
+  double* factor_values() { return m_factor->valuePtr(); }
+  const double* factor_values() const { return m_factor->valuePtr(); }
   std::vector<Supernode> m_supernodes;
   std::vector<int> m_position;      // position of each unknown in the factor's order
   std::vector<int> m_top;           // columns of the top, ascending
