@@ -40,8 +40,8 @@ inline std::vector<int> free_vertex_indices(std::size_t n, const std::array<Fixe
 
 // Lower triangle of the unit-weight graph Laplacian among the free vertices (`free_index` of
 // free_vertex_indices(): increasing), written in compressed form: the edges, sorted, give each
-// column's rows in order (setFromTriplets() took 3 times as long, most of it in its triplets'
-// fresh pages and its two copies: doc/performance.md, change 31).
+// column's rows in order (with setFromTriplets() the assembly took 3 times as long, most of it
+// in the triplets' fresh pages and the two copies: doc/performance.md, change 31).
 inline Sparse_matrix free_vertex_laplacian(const Norm_preserving_geometry& geometry, const std::vector<int>& free_index)
 {
   const int free_count = int(std::count_if(free_index.begin(), free_index.end(), [](int i) { return i >= 0; }));

@@ -302,8 +302,8 @@ private:
       return this->info() == Eigen::Success;
     }
 
-    // Moves the factor (by columns, diagonal first) into `factor`: its storage, not a copy,
-    // whose fresh pages cost 10-20% of a small mesh's factorization (doc/performance.md, change 31).
+    // Moves the factor (by columns, diagonal first) into `factor`: its storage, not a copy (the
+    // copy's fresh pages took 10-30% of a small mesh's factorization: doc/performance.md, change 31).
     void take_factor(Sparse_matrix& factor) { factor.swap(this->m_matrix); }
 
     double entries = 0, work = 0; // of the factor, and the work of factoring (factorization_work_per_entry())
