@@ -713,6 +713,24 @@ TEST(TwoColumnCholesky, LaplacianIsTheOneOfItsTriplets)
   }
 }
 
+// Below CHOLMOD's size the factor is in the order of Eigen's AMDOrdering (where AMD's tree does
+// not split so unevenly that a dissection is tried), although AMD runs on a pattern written
+// without Eigen's A' + A.
+TEST(TwoColumnCholesky, OrdersLikeEigensAmd)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  for(const std::string name : {"handle", "cow", "nefertiti", "elephant-with-holes"})
+  {
+    const NP::Sparse_matrix lower = free_laplacian(np_test::load_mesh(name));
+    NP::Two_column_cholesky cholesky;
+    ASSERT_TRUE(cholesky.compute(lower)) << name;
+    const Eigen::SimplicialLLT<NP::Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > llt(lower);
+    ASSERT_EQ(llt.info(), Eigen::Success) << name;
+    const int* expected = llt.permutationP().indices().data();
+    EXPECT_TRUE(std::equal(cholesky.positions().begin(), cholesky.positions().end(), expected)) << name;
+  }
+}
+
 // A right-hand side given in the factor's order (the ADMM's mesh step) is solved like Eigen's
 // LDL' solve of the matrix, on the Eigen factor (cow, split into parts) and, configured with
 // CHOLMOD, on CHOLMOD's (bunny00); again in the same vector, whose tail the first solve filled.

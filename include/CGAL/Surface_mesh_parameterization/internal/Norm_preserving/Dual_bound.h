@@ -51,7 +51,7 @@ inline double sign_constrained_dual_bound(const Norm_preserving_geometry& geomet
   const std::size_t m = geometry.edges.size();
   const std::size_t free_count = incidence.first.size() - 1;
   std::vector<std::array<double, 2> > values(m);
-  std::vector<double> t(2 * free_count);
+  std::vector<double> t(laplacian.solve_size());
   auto free_value = [&](const std::vector<double>& x, std::size_t i, int c) {
     return row[i] >= 0 ? x[2 * std::size_t(row[i]) + std::size_t(c)] : 0.;
   };

@@ -101,7 +101,9 @@ inline void add_edge_difference(std::vector<double>& rhs, const std::vector<int>
 
 // The edges at each free vertex in edge order, those of free vertex f from first[f] to
 // first[f + 1]: the edge, and +1 where the vertex is its first end, -1 where its second.
-// With every vertex free (free_index[i] == i), the edges at each vertex of the mesh.
+// free_vertex_edges() numbers the free vertices by `free_index`, which may be any one-to-one
+// numbering of them from 0 (the ADMM's is their rows in the factor's order); with every
+// vertex free (free_index[i] == i), the edges at each vertex of the mesh.
 struct Free_vertex_edges
 {
   std::vector<std::size_t> first;

@@ -247,7 +247,6 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
 
   // Free vertices and the Laplacian D'D among them.
   const std::vector<int> free_index = free_vertex_indices(n, fixed);
-  const int free_count = int(std::count_if(free_index.begin(), free_index.end(), [](int i) { return i >= 0; }));
   Two_column_cholesky local_cholesky;
   Two_column_cholesky& cholesky = state ? state->cholesky : local_cholesky;
   if(!state || !state->factored)
@@ -290,7 +289,7 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
   for(std::size_t i = 0; i < n; ++i)
     if(free_index[i] >= 0)
       row[i] = cholesky.positions()[std::size_t(free_index[i])];
-  std::vector<double> rhs(2 * std::size_t(free_count)); // u and v interleaved
+  std::vector<double> rhs(cholesky.solve_size()); // u and v interleaved, then the solve's slots
   const Free_vertex_edges incidence = free_vertex_edges(geometry, row);
   std::vector<std::array<double, 2> > edge_values(m); // wished differences, then changes of z
   // The edges with a fixed end, whose wished differences also carry the fixed values to the
@@ -497,7 +496,10 @@ inline Admm_result solve_sign_constrained_admm(const Norm_preserving_geometry& g
     for(std::size_t i = 0; i < n; ++i) // in vertex order
       if(row[i] >= 0)
         for(int c = 0; c < 2; ++c)
-          dual += rhs[2 * std::size_t(row[i]) + std::size_t(c)] * rhs[2 * std::size_t(row[i]) + std::size_t(c)];
+        {
+          const double change = rhs[2 * std::size_t(row[i]) + std::size_t(c)];
+          dual += change * change;
+        }
     result.iterations = k;
     result.primal_residual = std::sqrt(primal) / l1_norm;
     result.dual_residual = std::sqrt(dual) / l1_norm;

@@ -85,7 +85,7 @@ public:
   void solve(std::vector<double>& b) const
   {
     std::vector<double>& y = m_work;
-    y.resize(2 * m_n);
+    y.resize(solve_size());
     for(std::size_t i = 0; i < m_n; ++i)
     {
       y[2 * std::size_t(m_position[i])] = b[2 * i];
@@ -100,12 +100,12 @@ public:
   }
 
   // solve() for `y` given and returned in the factor's order (unknown i at row positions()[i]),
-  // without the two passes that permute it: its first 2n entries are the columns; it may grow
-  // (the parts' slots for the top follow them).
+  // without the two passes that permute it: its first 2n entries are the columns; it is sized
+  // to solve_size() (the parts' slots for the top follow the columns).
   void solve_in_order(std::vector<double>& y) const
   {
     const std::size_t top = m_top.size();
-    y.resize(2 * (m_n + part_count * top));
+    y.resize(solve_size());
     std::fill(y.begin() + std::ptrdiff_t(2 * m_n), y.end(), 0.);
     // L y = P b: the parts, their updates of the top gathered, then the top.
     const std::size_t parts = m_part_supernodes.empty() ? 0 : part_count; // a small factor is all top
@@ -131,6 +131,9 @@ public:
         backward_supernode(m_supernodes[std::size_t(m_part_supernodes[std::size_t(k)])], y);
     });
   }
+
+  // The size solve_in_order() gives its vector: the two columns, then the parts' slots.
+  std::size_t solve_size() const { return 2 * (m_n + part_count * m_top.size()); }
 
   // The position of each unknown in the order the factor eliminates them.
   const std::vector<int>& positions() const { return m_position; }
@@ -271,13 +274,7 @@ private:
     double analyze(const Sparse_matrix& lower)
     {
       const std::size_t n = std::size_t(lower.rows());
-      const Sparse_matrix* ordered = nullptr; // the step fills m_ordered, given a lower triangle
-#if EIGEN_VERSION_AT_LEAST(3, 4, 90) // a flag for non-Hermitian matrices from then on
-      this->template ordering<false>(lower, ordered, m_ordered);
-#else
-      this->ordering(lower, ordered, m_ordered);
-#endif
-      CGAL_assertion(ordered == &m_ordered);
+      order(lower);
       this->analyzePattern_preordered(m_ordered, false);
       auto column = [&](std::size_t j) { return double(this->m_nonZerosPerCol[Eigen::Index(j)]) + 1.; }; // and the diagonal
       entries = work = 0;
@@ -310,6 +307,73 @@ private:
     Tree_split split;
 
   private:
+    // Eigen's ordering step: fills the permutations and m_ordered. AMD is run on the full
+    // pattern, written here straight from the lower triangle: Eigen's AMDOrdering would first
+    // form A' + A of the full matrix, two more copies of a matrix already symmetric, and grow
+    // it for AMD's workspace in a third (doc/performance.md, change 32). The pattern and its
+    // order are those of Eigen's A' + A, so the permutation is the same.
+    void order(const Sparse_matrix& lower)
+    {
+      if constexpr(std::is_same<Ordering, Eigen::AMDOrdering<int> >::value)
+      {
+        Sparse_matrix full = full_pattern(lower);
+        Eigen::internal::minimum_degree_ordering(full, this->m_Pinv);
+        this->m_P = this->m_Pinv.inverse();
+        m_ordered.resize(lower.rows(), lower.cols());
+        m_ordered.template selfadjointView<Eigen::Upper>() =
+          lower.selfadjointView<Eigen::Lower>().twistedBy(this->m_P);
+      }
+      else
+      {
+        const Sparse_matrix* ordered = nullptr; // the step fills m_ordered, given a lower triangle
+#if EIGEN_VERSION_AT_LEAST(3, 4, 90) // a flag for non-Hermitian matrices from then on
+        this->template ordering<false>(lower, ordered, m_ordered);
+#else
+        this->ordering(lower, ordered, m_ordered);
+#endif
+        CGAL_assertion(ordered == &m_ordered);
+      }
+    }
+
+    // The symmetric matrix of lower triangle `lower`, each column's rows in increasing order,
+    // with the room AMD takes for its workspace (Eigen's minimum_degree_ordering) reserved.
+    static Sparse_matrix full_pattern(const Sparse_matrix& lower)
+    {
+      const int n = int(lower.cols());
+      const int* first = lower.outerIndexPtr();
+      const int* rows = lower.innerIndexPtr();
+      Sparse_matrix full(n, n);
+      int* start = full.outerIndexPtr();
+      std::fill(start, start + n + 1, 0);
+      for(int j = 0; j < n; ++j)
+        for(int p = first[j]; p < first[j + 1]; ++p)
+        {
+          ++start[j + 1];
+          if(rows[p] != j)
+            ++start[rows[p] + 1];
+        }
+      std::partial_sum(start, start + n + 1, start);
+      const int entries = start[n];
+      full.reserve(entries + entries / 5 + 2 * n);
+      full.resizeNonZeros(entries);
+      std::vector<int> next(start, start + n);
+      int* row = full.innerIndexPtr();
+      double* value = full.valuePtr();
+      for(int j = 0; j < n; ++j) // the rows above the diagonal come from the columns before
+        for(int p = first[j]; p < first[j + 1]; ++p)
+        {
+          const int i = rows[p];
+          row[next[j]] = i;
+          value[next[j]++] = lower.valuePtr()[p];
+          if(i != j)
+          {
+            row[next[i]] = j;
+            value[next[i]++] = lower.valuePtr()[p];
+          }
+        }
+      return full;
+    }
+
     Sparse_matrix m_ordered; // the matrix in its order (upper triangle)
   };
 
