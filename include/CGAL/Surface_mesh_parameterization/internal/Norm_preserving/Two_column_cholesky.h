@@ -316,7 +316,8 @@ private:
     {
       if constexpr(std::is_same<Ordering, Eigen::AMDOrdering<int> >::value)
       {
-        Sparse_matrix full = full_pattern(lower);
+        Sparse_matrix full;
+        full_pattern(lower, full);
         Eigen::internal::minimum_degree_ordering(full, this->m_Pinv);
         this->m_P = this->m_Pinv.inverse();
         m_ordered.resize(lower.rows(), lower.cols());
@@ -335,16 +336,18 @@ private:
       }
     }
 
-    // The symmetric matrix of lower triangle `lower`, each column's rows in increasing order,
-    // with the room AMD takes for its workspace (Eigen's minimum_degree_ordering) reserved.
-    static Sparse_matrix full_pattern(const Sparse_matrix& lower)
+    // Writes into `full` the symmetric matrix of lower triangle `lower` (compressed, each
+    // column's rows in increasing order, as free_vertex_laplacian() writes it), its columns'
+    // rows in increasing order too, with the room AMD takes for its workspace (Eigen's
+    // minimum_degree_ordering) reserved: in place, since a returned copy would not keep it.
+    static void full_pattern(const Sparse_matrix& lower, Sparse_matrix& full)
     {
+      CGAL_precondition(lower.isCompressed());
       const int n = int(lower.cols());
       const int* first = lower.outerIndexPtr();
       const int* rows = lower.innerIndexPtr();
-      Sparse_matrix full(n, n);
-      int* start = full.outerIndexPtr();
-      std::fill(start, start + n + 1, 0);
+      full.resize(n, n);
+      int* start = full.outerIndexPtr(); // zeros
       for(int j = 0; j < n; ++j)
         for(int p = first[j]; p < first[j + 1]; ++p)
         {
@@ -371,7 +374,6 @@ private:
             value[next[i]++] = lower.valuePtr()[p];
           }
         }
-      return full;
     }
 
     Sparse_matrix m_ordered; // the matrix in its order (upper triangle)
