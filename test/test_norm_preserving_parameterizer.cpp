@@ -732,17 +732,22 @@ TEST(TwoColumnCholesky, OrdersLikeEigensAmd)
 }
 
 // A right-hand side given in the factor's order (the ADMM's mesh step) is solved like Eigen's
-// LDL' solve of the matrix, on the Eigen factor (cow, split into parts) and, configured with
-// CHOLMOD, on CHOLMOD's (bunny00); again in the same vector, whose tail the first solve filled.
+// LDL' solve of the matrix, on the Eigen factor (cow, split into parts; nefertiti, all top, no
+// slots) and, configured with CHOLMOD, on CHOLMOD's (bunny00); again in the same vector, whose
+// tail the first solve filled.
 TEST(TwoColumnCholesky, SolvesInItsOwnOrder)
 {
   namespace NP = SMP::internal::Norm_preserving;
-  for(const std::string name : {"cow", "bunny00"})
+  for(const std::string name : {"cow", "bunny00", "nefertiti"})
   {
     const NP::Sparse_matrix lower = free_laplacian(np_test::load_mesh(name));
     const std::size_t n = std::size_t(lower.rows());
     NP::Two_column_cholesky cholesky;
     ASSERT_TRUE(cholesky.compute(lower)) << name;
+    // Slots for the parts only where the factor is split (not nefertiti's, all top).
+    const bool split = cholesky.sequential_columns() < n;
+    EXPECT_EQ(split, name != "nefertiti") << name;
+    EXPECT_EQ(cholesky.solve_size(), 2 * (n + (split ? 4 * cholesky.sequential_columns() : 0))) << name;
     Eigen::SimplicialLDLT<NP::Sparse_matrix, Eigen::Lower> ldlt(lower);
     ASSERT_EQ(ldlt.info(), Eigen::Success);
     std::vector<double> y;

@@ -104,17 +104,16 @@ public:
   // to solve_size() (the parts' slots for the top follow the columns).
   void solve_in_order(std::vector<double>& y) const
   {
-    const std::size_t top = m_top.size();
+    const std::size_t top = m_top.size(), parts = split_parts();
     y.resize(solve_size());
     std::fill(y.begin() + std::ptrdiff_t(2 * m_n), y.end(), 0.);
     // L y = P b: the parts, their updates of the top gathered, then the top.
-    const std::size_t parts = m_part_supernodes.empty() ? 0 : part_count; // a small factor is all top
     parallel_for_each_index(parts, [&](std::size_t p) {
       for(int k = m_part_first[p]; k < m_part_first[p + 1]; ++k)
         forward_supernode(m_supernodes[std::size_t(m_part_supernodes[std::size_t(k)])], y);
     });
     for(std::size_t q = 0; q < top; ++q)
-      for(std::size_t p = 0; p < part_count; ++p)
+      for(std::size_t p = 0; p < parts; ++p)
         for(int c = 0; c < 2; ++c)
           y[2 * std::size_t(m_top[q]) + c] += y[2 * (m_n + p * top + q) + c];
     for(int k : m_top_supernodes)
@@ -123,7 +122,7 @@ public:
     for(std::size_t k = m_top_supernodes.size(); k-- > 0;)
       backward_supernode(m_supernodes[std::size_t(m_top_supernodes[k])], y);
     for(std::size_t q = 0; q < top; ++q)
-      for(std::size_t p = 0; p < part_count; ++p)
+      for(std::size_t p = 0; p < parts; ++p)
         for(int c = 0; c < 2; ++c)
           y[2 * (m_n + p * top + q) + c] = y[2 * std::size_t(m_top[q]) + c];
     parallel_for_each_index(parts, [&](std::size_t p) {
@@ -133,7 +132,7 @@ public:
   }
 
   // The size solve_in_order() gives its vector: the two columns, then the parts' slots.
-  std::size_t solve_size() const { return 2 * (m_n + part_count * m_top.size()); }
+  std::size_t solve_size() const { return 2 * (m_n + split_parts() * m_top.size()); }
 
   // The position of each unknown in the order the factor eliminates them.
   const std::vector<int>& positions() const { return m_position; }
@@ -423,6 +422,10 @@ private:
     llt.take_factor(*m_factor);
     return true;
   }
+
+  // The number of parts solved apart from the top: none for a small factor, which is all top
+  // (its solve then has no slots for the parts; doc/performance.md, change 32).
+  std::size_t split_parts() const { return m_part_supernodes.empty() ? 0 : part_count; }
 
   // The triangle (by columns) comes first in a supernode's entries, then its rows.
   static std::size_t triangle_size(int width) { return std::size_t(width) * std::size_t(width + 1) / 2; }
