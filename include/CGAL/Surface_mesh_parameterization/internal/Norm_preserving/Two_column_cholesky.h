@@ -335,10 +335,11 @@ private:
       }
     }
 
-    // Writes into `full` the symmetric matrix of lower triangle `lower` (compressed, each
-    // column's rows in increasing order, as free_vertex_laplacian() writes it), its columns'
-    // rows in increasing order too, with the room AMD takes for its workspace (Eigen's
-    // minimum_degree_ordering) reserved: in place, since a returned copy would not keep it.
+    // Writes into `full` the pattern of the symmetric matrix of lower triangle `lower`
+    // (compressed, each column's rows in increasing order, as free_vertex_laplacian() writes
+    // it), its columns' rows in increasing order too, with the room AMD takes for its workspace
+    // (Eigen's minimum_degree_ordering) reserved: in place, since a returned copy would not keep
+    // it. The values are left unwritten (their pages untouched): AMD reads the pattern only.
     static void full_pattern(const Sparse_matrix& lower, Sparse_matrix& full)
     {
       CGAL_precondition(lower.isCompressed());
@@ -360,18 +361,13 @@ private:
       full.resizeNonZeros(entries);
       std::vector<int> next(start, start + n);
       int* row = full.innerIndexPtr();
-      double* value = full.valuePtr();
       for(int j = 0; j < n; ++j) // the rows above the diagonal come from the columns before
         for(int p = first[j]; p < first[j + 1]; ++p)
         {
           const int i = rows[p];
-          row[next[j]] = i;
-          value[next[j]++] = lower.valuePtr()[p];
+          row[next[j]++] = i;
           if(i != j)
-          {
-            row[next[i]] = j;
-            value[next[i]++] = lower.valuePtr()[p];
-          }
+            row[next[i]++] = j;
         }
     }
 
