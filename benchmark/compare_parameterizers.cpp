@@ -4,9 +4,9 @@
 // XY-MinMax guess with sign refinement, Euclidean refinement or both, and the Euclidean
 // refinement after a loosely solved QP, see doc/refinement.md) and
 // CGAL's LSCM, ARAP, discrete conformal, discrete authalic, mean value coordinates and
-// iterative authalic (on a disk: the mesh cut by cut_to_disk where it is not one), each in its
-// own process, and prints one table as Markdown (stdout) and CSV (--csv), with a plot of time
-// against vertex count (--svg). Progress goes to stderr.
+// iterative authalic (on a disk: the mesh cut by cut_to_disk where it is not one), each in a
+// new process of its own (doc/benchmarks.md), and prints one table as Markdown (stdout) and CSV
+// (--csv), with a plot of time against vertex count (--svg). Progress goes to stderr.
 //
 // Usage: compare_parameterizers [--runs N] [--time-limit S] [--csv FILE] [--svg FILE]
 //                               [--methods a,b,...] mesh...
@@ -374,6 +374,12 @@ Options parse(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
+  // The measuring side of np_benchmark::run_in_new_process(): --child METHOD MESH RUNS.
+  if(argc == 5 && std::string(argv[1]) == "--child")
+    return np_benchmark::run_as_child([&] {
+      Mesh mesh = load(argv[3]);
+      return measure(argv[2], mesh, topology(mesh), std::stoi(argv[4])).serialize();
+    });
   Options options;
   try { options = parse(argc, argv); }
   catch(const std::exception& e) { std::cerr << "error: " << e.what() << '\n'; return 2; }
@@ -402,10 +408,8 @@ int main(int argc, char** argv)
       std::cerr << spec << " (" << base.vertices << " vertices): " << method << "...\n";
       Row row = base;
       row.method = method;
-      const np_benchmark::Child_result result = np_benchmark::run_in_child([&] {
-        Mesh mesh = load(spec);
-        return measure(method, mesh, topology(mesh), options.runs).serialize();
-      }, options.time_limit);
+      const np_benchmark::Child_result result =
+        np_benchmark::run_in_new_process({"--child", method, spec, std::to_string(options.runs)}, options.time_limit);
       row.status = result.status;
       if(result.status == "ok") row.m = Measurement::parse(result.payload);
       std::cerr << "  " << row.status << (row.status == "ok" ? ", " + number(row.m.seconds) + " s" : "") << '\n';

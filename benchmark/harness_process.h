@@ -1,6 +1,6 @@
-// Runs one measurement in a child process: a crash, a failure or a time-out of the measured
+// Runs one measurement in a process of its own: a crash, a failure or a time-out of the measured
 // method becomes a status of its own, never a crash of the harness; the child's peak memory
-// is measured alone.
+// is measured alone, and its time does not depend on what was measured before.
 
 #ifndef NP_BENCHMARK_HARNESS_PROCESS_H
 #define NP_BENCHMARK_HARNESS_PROCESS_H
@@ -16,6 +16,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace np_benchmark {
 
@@ -49,12 +50,37 @@ struct Child_result
   std::string payload; // what the child wrote, on success
 };
 
-// Runs `work` in a child; `work` returns the payload line, or throws. Waits at most
-// `time_limit` seconds.
-inline Child_result run_in_child(const std::function<std::string()>& work, double time_limit)
+// The measured side, in the process run_in_new_process() starts: runs `work` with the standard
+// output sent to /dev/null (some measured methods print their iterations) and writes "ok", or
+// "error", a tab and `work`'s payload line, or what it threw, to the standard output it was
+// given. Returns the process's exit status.
+inline int run_as_child(const std::function<std::string()>& work)
+{
+  const int out = dup(STDOUT_FILENO);
+  if(out < 0 || std::freopen("/dev/null", "w", stdout) == nullptr) return 2;
+  std::string line;
+  try { line = "ok\t" + work(); }
+  catch(const std::exception& e) { line = std::string("error\t") + e.what(); }
+  catch(...) { line = "error\tunknown exception"; }
+  line += '\n';
+  return write(out, line.data(), line.size()) == ssize_t(line.size()) ? 0 : 2;
+}
+
+// Runs this program again with `arguments` (argv[1] on) in a new process, which calls
+// run_as_child(), and reads its payload; waits at most `time_limit` seconds. A new program,
+// not a fork: a fork inherits the harness's allocator state (glibc raises its trim and mmap
+// thresholds to the largest block freed), and a small mesh measured after a large one ran
+// without the page faults it has on its own, a method's time then depending on the meshes
+// measured before it (doc/benchmarks.md).
+inline Child_result run_in_new_process(const std::vector<std::string>& arguments, double time_limit)
 {
   int fds[2];
   if(pipe(fds) != 0) return {"pipe failed", ""};
+  std::vector<std::string> words = {"harness-child"};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for(std::string& w : words) argv.push_back(&w[0]);
+  argv.push_back(nullptr);
   std::fflush(stdout);
   std::fflush(stderr);
   const pid_t pid = fork();
@@ -62,15 +88,12 @@ inline Child_result run_in_child(const std::function<std::string()>& work, doubl
   if(pid == 0)
   {
     close(fds[0]);
-    // Some measured methods print their iterations; only the payload leaves the child.
-    if(std::freopen("/dev/null", "w", stdout) == nullptr) _exit(2);
-    std::string line;
-    try { line = "ok\t" + work(); }
-    catch(const std::exception& e) { line = std::string("error\t") + e.what(); }
-    catch(...) { line = "error\tunknown exception"; }
-    line += '\n';
-    if(write(fds[1], line.data(), line.size()) < 0) _exit(2);
-    _exit(0);
+    if(dup2(fds[1], STDOUT_FILENO) < 0) _exit(2);
+    close(fds[1]);
+    execv("/proc/self/exe", argv.data());
+    const char failed[] = "error\texec failed\n";
+    if(write(STDOUT_FILENO, failed, sizeof failed - 1) < 0) _exit(2);
+    _exit(127);
   }
   close(fds[1]);
   std::string output;
