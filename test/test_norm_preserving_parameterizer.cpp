@@ -713,6 +713,40 @@ TEST(TwoColumnCholesky, LaplacianIsTheOneOfItsTriplets)
   }
 }
 
+// The gather over each free vertex's edges (Free_vertex_edges, the edge and its end packed in 32
+// bits) is D' times the edge values: each edge's value added at its first end and subtracted at
+// its second, in edge order (the same sums, to the bit), under any numbering of the free
+// vertices (here the reverse of their order).
+TEST(FreeVertexEdges, GatherIsTheTransposedIncidence)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  for(const std::string name : {"nefertiti", "cow"})
+  {
+    const SMP::Norm_preserving_geometry geometry = component_geometry(np_test::load_mesh(name));
+    const std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{geometry.edges[5][0], {0., 0.}},
+                                                   NP::Fixed_vertex{geometry.edges[5][1], {1., 0.}}};
+    std::vector<int> number = NP::free_vertex_indices(geometry.points.size(), fixed);
+    const int free_count = int(geometry.points.size()) - 2;
+    for(int& f : number)
+      if(f >= 0) f = free_count - 1 - f;
+    const std::size_t m = geometry.edges.size();
+    std::vector<std::array<double, 2> > values(m);
+    for(std::size_t e = 0; e < m; ++e)
+      values[e] = {std::sin(0.37 * double(2 * e)), std::sin(0.37 * double(2 * e + 1))};
+    std::vector<double> expected(2 * std::size_t(free_count), 0.);
+    for(std::size_t e = 0; e < m; ++e)
+      for(int c = 0; c < 2; ++c)
+      {
+        const int fi = number[geometry.edges[e][0]], fj = number[geometry.edges[e][1]];
+        if(fi >= 0) expected[2 * std::size_t(fi) + std::size_t(c)] += values[e][std::size_t(c)];
+        if(fj >= 0) expected[2 * std::size_t(fj) + std::size_t(c)] -= values[e][std::size_t(c)];
+      }
+    std::vector<double> gathered(expected.size());
+    NP::gather_edge_values(NP::free_vertex_edges(geometry, number), values, gathered);
+    EXPECT_EQ(gathered, expected) << name;
+  }
+}
+
 // Below CHOLMOD's size the factor is in the order of Eigen's AMDOrdering (where AMD's tree does
 // not split so unevenly that a dissection is tried), although AMD runs on a pattern written
 // without Eigen's A' + A.

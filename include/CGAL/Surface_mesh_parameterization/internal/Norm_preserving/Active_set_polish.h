@@ -815,7 +815,7 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
       for(std::size_t k = order.size() - 1; k < order.size(); ++k)
         for(std::size_t l = incident.first[order[k]]; l < incident.first[order[k] + 1]; ++l)
         {
-          const std::size_t e = incident.edges[l];
+          const std::size_t e = incident.edge(l);
           const std::size_t other = geometry.edges[e][0] + geometry.edges[e][1] - order[k];
           if(active[e][c] && !seen[other])
           {

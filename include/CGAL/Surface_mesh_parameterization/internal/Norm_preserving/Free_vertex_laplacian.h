@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -100,19 +101,25 @@ inline void add_edge_difference(std::vector<double>& rhs, const std::vector<int>
 }
 
 // The edges at each free vertex in edge order, those of free vertex f from first[f] to
-// first[f + 1]: the edge, and +1 where the vertex is its first end, -1 where its second.
+// first[f + 1]: ends[k] = 2 e for edge e where the vertex is its first end (sign(k) = +1),
+// 2 e + 1 where its second (-1), in 32 bits (a tenth of a small call's page faults went to
+// these lists in 64-bit indices and signs: doc/performance.md, change 33).
 // free_vertex_edges() numbers the free vertices by `free_index`, which may be any one-to-one
 // numbering of them from 0 (the ADMM's is their rows in the factor's order); with every
 // vertex free (free_index[i] == i), the edges at each vertex of the mesh.
 struct Free_vertex_edges
 {
-  std::vector<std::size_t> first;
-  std::vector<std::size_t> edges;
-  std::vector<double> signs;
+  std::vector<std::uint32_t> first;
+  std::vector<std::uint32_t> ends;
+
+  std::size_t edge(std::size_t k) const { return ends[k] >> 1; }
+  double sign(std::size_t k) const { return (ends[k] & 1) != 0 ? -1. : 1.; }
 };
 
+// Needs fewer than 2^31 edges (the Laplacian's 32-bit indices need fewer still).
 inline Free_vertex_edges free_vertex_edges(const Norm_preserving_geometry& geometry, const std::vector<int>& free_index)
 {
+  CGAL_precondition(geometry.edges.size() < (std::size_t(1) << 31));
   const std::size_t free_count = std::size_t(std::count_if(free_index.begin(), free_index.end(), [](int i) { return i >= 0; }));
   Free_vertex_edges result;
   result.first.assign(free_count + 1, 0);
@@ -122,18 +129,14 @@ inline Free_vertex_edges free_vertex_edges(const Norm_preserving_geometry& geome
         ++result.first[std::size_t(free_index[end]) + 1];
   for(std::size_t f = 0; f < free_count; ++f)
     result.first[f + 1] += result.first[f];
-  result.edges.resize(result.first[free_count]);
-  result.signs.resize(result.first[free_count]);
-  std::vector<std::size_t> fill(result.first.begin(), result.first.end() - 1);
+  result.ends.resize(result.first[free_count]);
+  std::vector<std::uint32_t> fill(result.first.begin(), result.first.end() - 1);
   for(std::size_t e = 0; e < geometry.edges.size(); ++e)
-    for(int end = 0; end < 2; ++end)
+    for(std::size_t end = 0; end < 2; ++end)
     {
-      const int f = free_index[geometry.edges[e][std::size_t(end)]];
+      const int f = free_index[geometry.edges[e][end]];
       if(f >= 0)
-      {
-        result.edges[fill[std::size_t(f)]] = e;
-        result.signs[fill[std::size_t(f)]++] = end == 0 ? 1. : -1.;
-      }
+        result.ends[fill[std::size_t(f)]++] = std::uint32_t(2 * e + end);
     }
   return result;
 }
@@ -151,9 +154,10 @@ inline void gather_edge_values(const Free_vertex_edges& incidence, const std::ve
       double u = 0, v = 0;
       for(std::size_t k = incidence.first[f]; k < incidence.first[f + 1]; ++k)
       {
-        const std::array<double, 2>& value = values[incidence.edges[k]];
-        u += incidence.signs[k] * value[0];
-        v += incidence.signs[k] * value[1];
+        const std::array<double, 2>& value = values[incidence.edge(k)];
+        const double sign = incidence.sign(k);
+        u += sign * value[0];
+        v += sign * value[1];
       }
       rhs[2 * f] = u;
       rhs[2 * f + 1] = v;
