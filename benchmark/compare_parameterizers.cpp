@@ -5,7 +5,7 @@
 // refinement after a loosely solved QP, see doc/refinement.md) and
 // CGAL's LSCM, ARAP, discrete conformal, discrete authalic, mean value coordinates and
 // iterative authalic (on a disk: the mesh cut by cut_to_disk where it is not one), each in a
-// new process of its own (doc/benchmarks.md), and prints one table as Markdown (stdout) and CSV
+// new process of its own (doc/performance.md, change 33), and prints one table as Markdown (stdout) and CSV
 // (--csv), with a plot of time against vertex count (--svg). Progress goes to stderr.
 //
 // Usage: compare_parameterizers [--runs N] [--time-limit S] [--csv FILE] [--svg FILE]
@@ -42,6 +42,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -376,10 +377,10 @@ int main(int argc, char** argv)
 {
   // The measuring side of np_benchmark::run_in_new_process(): --child METHOD MESH RUNS.
   if(argc == 5 && std::string(argv[1]) == "--child")
-    return np_benchmark::run_as_child([&] {
+    std::_Exit(np_benchmark::run_as_child([&] {
       Mesh mesh = load(argv[3]);
       return measure(argv[2], mesh, topology(mesh), std::stoi(argv[4])).serialize();
-    });
+    }));
   Options options;
   try { options = parse(argc, argv); }
   catch(const std::exception& e) { std::cerr << "error: " << e.what() << '\n'; return 2; }
@@ -411,7 +412,11 @@ int main(int argc, char** argv)
       const np_benchmark::Child_result result =
         np_benchmark::run_in_new_process({"--child", method, spec, std::to_string(options.runs)}, options.time_limit);
       row.status = result.status;
-      if(result.status == "ok") row.m = Measurement::parse(result.payload);
+      if(row.status == "ok")
+      {
+        try { row.m = Measurement::parse(result.payload); }
+        catch(const std::exception&) { row.status = "bad payload"; }
+      }
       std::cerr << "  " << row.status << (row.status == "ok" ? ", " + number(row.m.seconds) + " s" : "") << '\n';
       rows.push_back(row);
     }

@@ -53,7 +53,8 @@ struct Child_result
 // The measured side, in the process run_in_new_process() starts: runs `work` with the standard
 // output sent to /dev/null (some measured methods print their iterations) and writes "ok", or
 // "error", a tab and `work`'s payload line, or what it threw, to the standard output it was
-// given. Returns the process's exit status.
+// given. Returns the process's exit status, for std::_Exit (the measured libraries' teardown
+// after the payload can then neither crash nor hold up a result).
 inline int run_as_child(const std::function<std::string()>& work)
 {
   const int out = dup(STDOUT_FILENO);
@@ -68,10 +69,10 @@ inline int run_as_child(const std::function<std::string()>& work)
 
 // Runs this program again with `arguments` (argv[1] on) in a new process, which calls
 // run_as_child(), and reads its payload; waits at most `time_limit` seconds. A new program,
-// not a fork: a fork inherits the harness's allocator state (glibc raises its trim and mmap
-// thresholds to the largest block freed), and a small mesh measured after a large one ran
-// without the page faults it has on its own, a method's time then depending on the meshes
-// measured before it (doc/benchmarks.md).
+// not a fork: a fork inherits the harness's allocator state (glibc raises its mmap threshold
+// to the size of a mapped block freed, and its trim threshold to twice that), and a small mesh
+// measured after a large one ran without the page faults it has on its own, a method's time
+// then depending on the meshes measured before it (doc/performance.md, change 33).
 inline Child_result run_in_new_process(const std::vector<std::string>& arguments, double time_limit)
 {
   int fds[2];
@@ -81,10 +82,13 @@ inline Child_result run_in_new_process(const std::vector<std::string>& arguments
   std::vector<char*> argv;
   for(std::string& w : words) argv.push_back(&w[0]);
   argv.push_back(nullptr);
-  std::fflush(stdout);
-  std::fflush(stderr);
   const pid_t pid = fork();
-  if(pid < 0) return {"fork failed", ""};
+  if(pid < 0)
+  {
+    close(fds[0]);
+    close(fds[1]);
+    return {"fork failed", ""};
+  }
   if(pid == 0)
   {
     close(fds[0]);
@@ -118,7 +122,8 @@ inline Child_result run_in_new_process(const std::vector<std::string>& arguments
   if(WIFSIGNALED(wstatus)) return {"crashed (signal " + std::to_string(WTERMSIG(wstatus)) + ")", ""};
   if(!output.empty() && output.back() == '\n') output.pop_back();
   const std::size_t tab = output.find('\t');
-  if(tab == std::string::npos) return {"no result", ""};
+  if(tab == std::string::npos)
+    return {"no result (exit status " + std::to_string(WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : -1) + ")", ""};
   if(output.compare(0, tab, "ok") != 0) return {output.substr(tab + 1), ""};
   return {"ok", output.substr(tab + 1)};
 }
