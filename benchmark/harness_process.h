@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -108,7 +109,7 @@ inline Child_result run_in_new_process(const std::vector<std::string>& arguments
     const double left = time_limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if(left <= 0) { timed_out = true; break; }
     pollfd p = {fds[0], POLLIN, 0};
-    if(poll(&p, 1, int(left * 1000) + 1) <= 0) continue;
+    if(poll(&p, 1, int((std::min)(left, 60.) * 1000) + 1) <= 0) continue; // at most a minute a wait
     char buffer[4096];
     const ssize_t n = read(fds[0], buffer, sizeof buffer);
     if(n <= 0) break;
