@@ -5,8 +5,9 @@
 // refinement after a loosely solved QP, see doc/refinement.md) and
 // CGAL's LSCM, ARAP, discrete conformal, discrete authalic, mean value coordinates and
 // iterative authalic (on a disk: the mesh cut by cut_to_disk where it is not one), each in a
-// new process of its own (doc/performance.md, change 33), and prints one table as Markdown (stdout) and CSV
-// (--csv), with a plot of time against vertex count (--svg). Progress goes to stderr.
+// new process of its own (doc/performance.md, change 33), and prints one table as Markdown
+// (stdout) and CSV (--csv), with a plot of time against vertex count (--svg). Progress goes to
+// stderr.
 //
 // Usage: compare_parameterizers [--runs N] [--time-limit S] [--csv FILE] [--svg FILE]
 //                               [--methods a,b,...] mesh...
