@@ -624,14 +624,20 @@ Skewed_start skewed_start(const SMP::Norm_preserving_geometry& geometry)
   return start;
 }
 
+// The ends of edge `e` fixed at (0, 0) and (1, 0).
+std::array<SMP::internal::Norm_preserving::Fixed_vertex, 2> fixed_edge(const SMP::Norm_preserving_geometry& geometry,
+                                                                       std::size_t e)
+{
+  namespace NP = SMP::internal::Norm_preserving;
+  return {NP::Fixed_vertex{geometry.edges[e][0], {0., 0.}}, NP::Fixed_vertex{geometry.edges[e][1], {1., 0.}}};
+}
+
 // The free-vertex Laplacian of a mesh with its first edge's ends fixed, as the ADMM builds it.
 SMP::internal::Norm_preserving::Sparse_matrix free_laplacian(const Mesh& mesh)
 {
   namespace NP = SMP::internal::Norm_preserving;
   const SMP::Norm_preserving_geometry geometry = component_geometry(mesh);
-  const std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{geometry.edges[0][0], {0., 0.}},
-                                                 NP::Fixed_vertex{geometry.edges[0][1], {1., 0.}}};
-  return NP::free_vertex_laplacian(geometry, NP::free_vertex_indices(geometry.points.size(), fixed));
+  return NP::free_vertex_laplacian(geometry, NP::free_vertex_indices(geometry.points.size(), fixed_edge(geometry, 0)));
 }
 
 // Two right-hand sides for n unknowns: column c of row i is sin(0.37 (2 i + c)).
@@ -697,8 +703,7 @@ TEST(TwoColumnCholesky, LaplacianIsTheOneOfItsTriplets)
   for(const std::string name : {"nefertiti", "cow"})
   {
     const SMP::Norm_preserving_geometry geometry = component_geometry(np_test::load_mesh(name));
-    const std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{geometry.edges[3][0], {0., 0.}},
-                                                   NP::Fixed_vertex{geometry.edges[3][1], {1., 0.}}};
+    const std::array<NP::Fixed_vertex, 2> fixed = fixed_edge(geometry, 3);
     const std::vector<int> free_index = NP::free_vertex_indices(geometry.points.size(), fixed);
     const NP::Sparse_matrix lower = NP::free_vertex_laplacian(geometry, free_index);
     std::vector<Eigen::Triplet<double> > triplets;
@@ -729,8 +734,7 @@ TEST(FreeVertexEdges, GatherIsTheTransposedIncidence)
   for(const std::string name : {"nefertiti", "cow"})
   {
     const SMP::Norm_preserving_geometry geometry = component_geometry(np_test::load_mesh(name));
-    const std::array<NP::Fixed_vertex, 2> fixed = {NP::Fixed_vertex{geometry.edges[5][0], {0., 0.}},
-                                                   NP::Fixed_vertex{geometry.edges[5][1], {1., 0.}}};
+    const std::array<NP::Fixed_vertex, 2> fixed = fixed_edge(geometry, 5);
     std::vector<int> number = NP::free_vertex_indices(geometry.points.size(), fixed);
     const int free_count = int(geometry.points.size()) - 2;
     for(int& f : number)
