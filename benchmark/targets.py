@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The speed and accuracy targets of doc/benchmarks.md, measured in one run of the comparison
-harness (each method and mesh in its own process): on every mesh of the suite and the two
+"""The speed and accuracy targets of doc/benchmarks.md, measured by the comparison harness (each
+method and mesh in its own process): on every mesh of the suite and the two
 subdivision series, ours (default settings), the interior-point solver and CGAL's LSCM; on the
 meshes of at most --certified-max-vertices vertices (default 50,000), ours in the certified
 exact mode too.
@@ -22,6 +22,7 @@ Usage: targets.py HARNESS [--runs N] [--rounds N] [--certified-max-vertices N] [
 HARNESS is build/benchmark/compare_parameterizers; the table goes to stdout."""
 import csv
 import math
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -83,7 +84,7 @@ def main(argv):
             times[row["mesh"], row["method"]].append(value(row, "seconds"))
     for (mesh, method), t in times.items():
         if len(t) > 1 and None not in t:
-            rows[mesh][method]["seconds"] = "%.4f" % sorted(t)[len(t) // 2]
+            rows[mesh][method]["seconds"] = "%.4f" % statistics.median(t)
     print_table(rows)
     return 0
 
