@@ -45,7 +45,7 @@ namespace Surface_mesh_parameterization {
 ///   `tolerance` (default 1e-9); from where the default would stop, it also tries the exact
 ///   optimum on the set of constraints the iterations have made active, corrected a few
 ///   times, which certifies there on 34 of the 35 benchmark meshes of up to 50,000 vertices
-///   (from 150,000 vertices on, the interior point is faster: doc/benchmarks.md); a tail not
+///   (at 150,000 vertices and more the interior point can be faster: doc/benchmarks.md); a tail not
 ///   settled by iteration 1,000, or whose tries are over by then without ending at the
 ///   optimum, goes to the interior point as in the default mode. Where the optimum is a tiny share of the zero map's
 ///   objective, the bound's rounding can keep the gap of the optimum itself above `tolerance`:
