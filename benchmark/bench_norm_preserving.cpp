@@ -10,7 +10,8 @@
 // (texture_polygon_soup) on the same vertices and triangles as `ours` (the parameterizer on
 // the Surface_mesh), for the comparison of the two paths:
 //   bench_norm_preserving --benchmark_filter='(ours|soup)/(cow/(0|3)|bunny00/0|mushroom/3)/'
-// `polygon/corners:<n>/wave:<0|1>` is step 1 on one large polygon, flat or not,
+// `quality/<draft|default|exact>/<mesh>/<steps>` is the quality ladder (benchmark/quality_ladder.py
+// prints it as a table); `polygon/corners:<n>/wave:<0|1>` is step 1 on one large polygon, flat or not,
 // `hole_filling/corners:<n>/wave:<0|1>` CGAL's 3D hole filling on the same outline (what step 1
 // did before it triangulated polygons in their plane).
 
@@ -69,6 +70,7 @@ static void ours(benchmark::State& state, const std::string& name)
   auto has_uv = mesh.add_property_map<Vertex, bool>("v:has_uv", false).first;
   SMP::Norm_preserving_parameterizer_3<Mesh> parameterizer;
   SMP::Norm_preserving_timings sum;
+  SMP::Norm_preserving_solve_report solve_sum;
   for(auto _ : state)
   {
     if(parameterizer.parameterize(mesh, *halfedges(mesh).begin(), uv, get(CGAL::vertex_index, mesh), has_uv) != SMP::OK)
@@ -76,41 +78,108 @@ static void ours(benchmark::State& state, const std::string& name)
     const SMP::Norm_preserving_timings& t = parameterizer.report().timings;
     sum.extraction += t.extraction;
     sum.guess += t.guess;
-    sum.assembly += t.assembly;
-    sum.factorization += t.factorization;
-    sum.iterations += t.iterations;
+    const SMP::Norm_preserving_solve_report& solved = parameterizer.report().solver;
+    solve_sum.assembly_seconds += solved.assembly_seconds;
+    solve_sum.factorization_seconds += solved.factorization_seconds;
+    solve_sum.iteration_seconds += solved.iteration_seconds;
     sum.write_back += t.write_back;
   }
   const auto per_run = benchmark::Counter::kAvgIterations;
   state.counters["vertices"] = double(num_vertices(mesh));
-  state.counters["solver_iterations"] = parameterizer.report().solver_iterations;
+  state.counters["solver_iterations"] = parameterizer.report().solver.iterations;
   state.counters["s_extract"] = benchmark::Counter(sum.extraction, per_run);
   state.counters["s_guess"] = benchmark::Counter(sum.guess, per_run);
-  state.counters["s_assemble"] = benchmark::Counter(sum.assembly, per_run);
-  state.counters["s_factor"] = benchmark::Counter(sum.factorization, per_run);
-  state.counters["s_iterate"] = benchmark::Counter(sum.iterations, per_run);
+  state.counters["s_assemble"] = benchmark::Counter(solve_sum.assembly_seconds, per_run);
+  state.counters["s_factor"] = benchmark::Counter(solve_sum.factorization_seconds, per_run);
+  state.counters["s_iterate"] = benchmark::Counter(solve_sum.iteration_seconds, per_run);
   state.counters["s_write"] = benchmark::Counter(sum.write_back, per_run);
+}
+
+// The vertices and triangles of a subdivided mesh, as a soup.
+struct Triangle_soup
+{
+  std::vector<Kernel::Point_3> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+};
+
+static Triangle_soup triangle_soup(const std::string& name, int steps)
+{
+  const Mesh& mesh = subdivided(name, steps);
+  Triangle_soup soup;
+  soup.points.assign(mesh.points().begin(), mesh.points().end());
+  for(auto f : faces(mesh))
+  {
+    const auto h = halfedge(f, mesh);
+    soup.triangles.push_back({std::size_t(source(h, mesh)), std::size_t(target(h, mesh)),
+                              std::size_t(target(next(h, mesh), mesh))});
+  }
+  return soup;
 }
 
 // The whole-soup call on the mesh's vertices and triangles (read outside the timing).
 static void soup(benchmark::State& state, const std::string& name)
 {
-  const Mesh& mesh = subdivided(name, int(state.range(0)));
-  std::vector<Kernel::Point_3> points(mesh.points().begin(), mesh.points().end());
-  std::vector<std::array<std::size_t, 3> > triangles;
-  for(auto f : faces(mesh))
-  {
-    const auto h = halfedge(f, mesh);
-    triangles.push_back({std::size_t(source(h, mesh)), std::size_t(target(h, mesh)),
-                         std::size_t(target(next(h, mesh), mesh))});
-  }
+  const Triangle_soup soup_of_mesh = triangle_soup(name, int(state.range(0)));
+  const std::vector<Kernel::Point_3>& points = soup_of_mesh.points;
+  const auto& triangles = soup_of_mesh.triangles;
   std::vector<Kernel::Point_2> uv(points.size());
   SMP::Texture_polygon_mesh_report report;
   for(auto _ : state)
-    if(SMP::texture_polygon_soup(points, triangles, CGAL::make_property_map(uv), {}, &report) != SMP::OK)
+    if(SMP::texture_polygon_soup(points, triangles, CGAL::make_property_map(uv), SMP::parameters::report(report)) != SMP::OK)
       state.SkipWithError(report.message.c_str());
   state.counters["vertices"] = double(points.size());
   state.counters["components"] = double(report.components);
+}
+
+// The quality ladder: the whole-soup call of each preset, with counters for its distance to the
+// exact mode's optimum: `excess`, (f - f*) / f* of Eq. 3, and `uv_distance`, the largest
+// distance of a vertex's uv from the exact map's (texture space, both fitted into [0,1]^2).
+// The exact map is made once per mesh, outside the timing. benchmark/quality_ladder.py sets
+// each beside one Laplacian factorization of the same run.
+struct Textured_soup
+{
+  std::vector<Kernel::Point_2> uv;
+  SMP::Texture_polygon_mesh_report report;
+};
+
+static Textured_soup texture(const Triangle_soup& soup, SMP::Norm_preserving_quality quality)
+{
+  Textured_soup result;
+  result.uv.resize(soup.points.size());
+  if(SMP::texture_polygon_soup(soup.points, soup.triangles, CGAL::make_property_map(result.uv),
+                               SMP::parameters::quality(quality).report(result.report)) != SMP::OK)
+    result.uv.clear();
+  return result;
+}
+
+static void quality(benchmark::State& state, const std::string& name, SMP::Norm_preserving_quality preset)
+{
+  const int steps = int(state.range(0));
+  const Triangle_soup soup = triangle_soup(name, steps);
+  static std::map<std::pair<std::string, int>, Textured_soup> exact_of;
+  auto cached = exact_of.find({name, steps});
+  if(cached == exact_of.end())
+    cached = exact_of.emplace(std::make_pair(name, steps), texture(soup, SMP::NORM_PRESERVING_EXACT_QUALITY)).first;
+  const Textured_soup& exact = cached->second;
+  Textured_soup run;
+  for(auto _ : state)
+    run = texture(soup, preset);
+  if(run.uv.empty() || exact.uv.empty())
+  {
+    state.SkipWithError("the whole-soup call failed");
+    return;
+  }
+  double distance = 0;
+  for(std::size_t i = 0; i < run.uv.size(); ++i)
+    distance = (std::max)(distance, std::sqrt(CGAL::squared_distance(run.uv[i], exact.uv[i])));
+  int iterations = 0;
+  for(const SMP::Norm_preserving_report& r : run.report.reports)
+    iterations = (std::max)(iterations, r.solver.iterations);
+  state.counters["vertices"] = double(soup.points.size());
+  state.counters["excess"] = run.report.objective / exact.report.objective - 1;
+  state.counters["certified_gap"] = run.report.optimality_gap;
+  state.counters["uv_distance"] = distance;
+  state.counters["solver_iterations"] = iterations;
 }
 
 static void lscm(benchmark::State& state, const std::string& name)
@@ -175,6 +244,18 @@ BENCHMARK_CAPTURE(laplacian, mushroom, std::string("mushroom"))->Apply(series);
 BENCHMARK_CAPTURE(ours, cow, std::string("cow"))->Apply(series);
 BENCHMARK_CAPTURE(lscm, cow, std::string("cow"))->Apply(series);
 BENCHMARK_CAPTURE(laplacian, cow, std::string("cow"))->Apply(series);
+// The quality ladder on the series up to 150k-190k vertices (the exact mode takes minutes beyond),
+// with the `laplacian` benchmarks above for the ratios.
+static void ladder(benchmark::internal::Benchmark* b)
+{
+  b->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1)->DenseRange(1, 3);
+}
+BENCHMARK_CAPTURE(quality, draft/mushroom, std::string("mushroom"), SMP::NORM_PRESERVING_DRAFT_QUALITY)->Apply(ladder);
+BENCHMARK_CAPTURE(quality, default/mushroom, std::string("mushroom"), SMP::NORM_PRESERVING_DEFAULT_QUALITY)->Apply(ladder);
+BENCHMARK_CAPTURE(quality, exact/mushroom, std::string("mushroom"), SMP::NORM_PRESERVING_EXACT_QUALITY)->Apply(ladder);
+BENCHMARK_CAPTURE(quality, draft/cow, std::string("cow"), SMP::NORM_PRESERVING_DRAFT_QUALITY)->Apply(ladder);
+BENCHMARK_CAPTURE(quality, default/cow, std::string("cow"), SMP::NORM_PRESERVING_DEFAULT_QUALITY)->Apply(ladder);
+BENCHMARK_CAPTURE(quality, exact/cow, std::string("cow"), SMP::NORM_PRESERVING_EXACT_QUALITY)->Apply(ladder);
 // The soup path against the mesh path.
 static void paths(benchmark::internal::Benchmark* b)
 {

@@ -189,16 +189,17 @@ Measurement measure_ours(Mesh& mesh, int runs, int sign_rounds = 0, int euclidea
                          const Solver& solver = Solver())
 {
   auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv").first;
-  SMP::Texture_polygon_mesh_options<Mesh, InitialGuess, Solver> options;
-  options.solver = solver;
-  options.texture_fit = SMP::NORM_PRESERVING_NO_FIT;
-  options.sign_refinement_rounds = sign_rounds;
-  options.euclidean_refinement_iterations = euclidean_iterations;
   Measurement m;
   np_benchmark::reset_peak_memory();
   m.seconds = median_seconds(runs, [&] {
     SMP::Texture_polygon_mesh_report report;
-    const bool ok = SMP::texture_polygon_mesh(mesh, uv, options, &report) == SMP::OK;
+    const bool ok = SMP::texture_polygon_mesh(mesh, uv,
+                                              SMP::parameters::initial_guess(InitialGuess())
+                                                .solver(solver)
+                                                .texture_fit(SMP::NORM_PRESERVING_NO_FIT)
+                                                .sign_refinement(sign_rounds)
+                                                .euclidean_refinement(euclidean_iterations)
+                                                .report(report)) == SMP::OK;
     m.optimality_gap = report.optimality_gap;
     return ok ? std::string() : report.message;
   });

@@ -50,7 +50,7 @@ int main(int argc, char** argv)
   std::cout << (mapped == n ? "all " : "only " + std::to_string(mapped) + " of ") << n
             << " vertices have a uv, seam edges: 0\n"
             << "objective (Eq. 3): " << report.initial_objective << " at the initial guess, "
-            << report.objective << " at the solution (" << report.solver_iterations << " iterations, "
+            << report.objective << " at the solution (" << report.solver.iterations << " iterations, "
             << report.seconds << " s)\n"
             << "edge-length error " << d.edge_length_error << ", flipped faces " << d.flipped_faces << "/"
             << d.faces << '\n';

@@ -56,7 +56,7 @@ int main()
   const My_mesh mesh = torus(48, 16);
   std::vector<Kernel::Point_2> uv(mesh.xyz.size()); // uv[i] is the uv of vertex i
   SMP::Texture_polygon_mesh_report report;
-  if(SMP::texture_indexed_mesh(mesh, CGAL::make_property_map(uv), {}, &report) != SMP::OK)
+  if(SMP::texture_indexed_mesh(mesh, CGAL::make_property_map(uv), SMP::parameters::report(report)) != SMP::OK)
   {
     std::cerr << "error: " << report.message << '\n';
     return 1;

@@ -32,11 +32,9 @@ int main(int argc, char** argv)
     largest_face = (std::max)(largest_face, std::size_t(degree(f, mesh)));
 
   auto uvmap = mesh.add_property_map<vertex_descriptor, Kernel::Point_2>("v:uv").first;
-  SMP::Texture_polygon_mesh_options<Mesh> options;
-  options.tiles_u = 2; // the texture repeats twice along u and twice along v
-  options.tiles_v = 2;
   SMP::Texture_polygon_mesh_report report;
-  if(SMP::texture_polygon_mesh(mesh, uvmap, options, &report) != SMP::OK)
+  // The texture repeats twice along u and twice along v.
+  if(SMP::texture_polygon_mesh(mesh, uvmap, SMP::parameters::tiling(2, 2).report(report)) != SMP::OK)
   {
     std::cerr << "error: " << report.message << '\n';
     return 1;

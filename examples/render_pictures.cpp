@@ -72,7 +72,7 @@ Textured_faces texture_ours(const Mesh& mesh, const std::string& svg)
   auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
   for(Vertex v : vertices(mesh)) put(uv, v, Point_2(0, 0));
   SMP::Texture_polygon_mesh_report report;
-  if(SMP::texture_polygon_mesh(mesh, uv, SMP::Texture_polygon_mesh_options<Mesh>(), &report) != SMP::OK)
+  if(SMP::texture_polygon_mesh(mesh, uv, SMP::parameters::report(report)) != SMP::OK)
     throw std::runtime_error("texture_polygon_mesh: " + report.message);
   if(!np_examples::write_uv_layout_svg(svg, mesh, uv))
     throw std::runtime_error("cannot write " + svg);

@@ -4,13 +4,12 @@
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh_parameterization/Combination_initial_guess.h>
-#include <CGAL/Surface_mesh_parameterization/Graph_based_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 #include <CGAL/property_map.h>
 
 #include "obj_soup_reader.h"
+#include "texture_settings.h"
 #include "textured_obj_writer.h"
 #include "uv_layout_svg.h"
 
@@ -36,7 +35,6 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Point_3 = Kernel::Point_3;
 using Polygon = std::vector<std::size_t>;
 using UV = std::vector<Kernel::Point_2>;
-using Vertex = SMP::Norm_preserving_triangle_mesh::Vertex_index;
 
 // The soup as read: vertices and faces in the file's order.
 struct Soup
@@ -67,6 +65,10 @@ const char* const usage =
   "  --tiles MxN                   repeat the texture M times along u, N along v (default 1x1)\n"
   "  --fixed-pair A,B              fix the edge between input vertices A and B (0-based);\n"
   "                                default: an automatic pair in every component\n"
+  "  --quality draft|default|exact how close to the optimum the solver goes (default: default;\n"
+  "                                draft: about 1% above, fastest; exact: certified to 1e-9)\n"
+  "  --tolerance T                 the solver's tolerance (default: the quality's)\n"
+  "  --time-limit S                stop the solver after S seconds with its best point\n"
   "  --refine-signs                re-solve with the signs of the solution (at most 10 rounds)\n"
   "  --refine-euclidean            then minimize the Euclidean edge-length error from the\n"
   "                                solution (stress majorization, at most 1000 steps)\n"
@@ -82,13 +84,7 @@ struct Settings
 {
   std::string input = std::string(NP_MESH_DIR) + "/cow.off";
   std::string output = "cow_textured";
-  std::string guess = "xy";
-  SMP::Texture_fit fit = SMP::NORM_PRESERVING_UNIFORM_FIT;
-  int tiles_u = 1, tiles_v = 1;
-  std::optional<std::pair<std::size_t, std::size_t> > fixed_pair;
-  bool weld = true;
-  bool refine_signs = false;
-  bool refine_euclidean = false;
+  np_examples::Texture_settings texture;
 };
 
 // Parses the command line; returns an error message, or nothing on success.
@@ -105,31 +101,39 @@ std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
     if(arg == "--help" || arg == "-h")
       help = true;
     else if(arg == "--keep-coincident")
-      s.weld = false;
+      s.texture.keep_coincident = true;
     else if(arg == "--refine-signs")
-      s.refine_signs = true;
+      s.texture.refine_signs = true;
     else if(arg == "--refine-euclidean")
-      s.refine_euclidean = true;
-    else if(arg == "--guess")
+      s.texture.refine_euclidean = true;
+    else if(arg == "--guess" || arg == "--fit" || arg == "--quality")
     {
       const auto v = value();
-      if(!v || (*v != "xy" && *v != "combination" && *v != "graph")) return "--guess takes xy, combination or graph";
-      s.guess = *v;
+      std::string& setting = arg == "--guess" ? s.texture.guess : arg == "--fit" ? s.texture.fit : s.texture.quality;
+      setting = v ? *v : std::string();
+      if(const auto problem = np_examples::settings_problem(s.texture))
+        return "--" + *problem;
     }
-    else if(arg == "--fit")
+    else if(arg == "--tolerance" || arg == "--time-limit")
     {
       const auto v = value();
-      if(v && *v == "uniform") s.fit = SMP::NORM_PRESERVING_UNIFORM_FIT;
-      else if(v && *v == "clamp") s.fit = SMP::NORM_PRESERVING_CLAMP_FIT;
-      else if(v && *v == "none") s.fit = SMP::NORM_PRESERVING_NO_FIT;
-      else return "--fit takes uniform, clamp or none";
+      std::istringstream in(v ? *v : std::string());
+      double number = 0;
+      char rest = 0;
+      if(!(in >> number) || in >> rest || !(number > 0) || !std::isfinite(number))
+        return arg + " takes a positive number" + (arg == "--time-limit" ? std::string(" of seconds") : std::string());
+      if(arg == "--tolerance")
+        s.texture.tolerance = number;
+      else
+        s.texture.time_limit = number;
     }
     else if(arg == "--tiles")
     {
       const auto v = value();
       char x = 0, rest = 0;
       std::istringstream in(v ? *v : std::string());
-      if(!(in >> s.tiles_u >> x >> s.tiles_v) || (x != 'x' && x != 'X') || in >> rest || s.tiles_u < 1 || s.tiles_v < 1)
+      if(!(in >> s.texture.tiles_u >> x >> s.texture.tiles_v) || (x != 'x' && x != 'X') || in >> rest ||
+         s.texture.tiles_u < 1 || s.texture.tiles_v < 1)
         return "--tiles takes MxN with M, N >= 1, such as 2x3";
     }
     else if(arg == "--fixed-pair")
@@ -140,7 +144,7 @@ std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
       std::istringstream in(v ? *v : std::string());
       if(!(in >> a >> comma >> b) || comma != ',' || in >> rest || a < 0 || b < 0)
         return "--fixed-pair takes two vertex indices A,B such as 0,1";
-      s.fixed_pair = std::make_pair(std::size_t(a), std::size_t(b));
+      s.texture.fixed_pair = std::make_pair(std::size_t(a), std::size_t(b));
     }
     else if(arg.size() > 1 && arg[0] == '-')
       return "unknown option " + arg;
@@ -174,29 +178,6 @@ auto with_progress(const std::string& what, Work work)
   if(seconds > 0)
     terminal << "\r" << what << ": done in about " << seconds << " s\n";
   return result.get();
-}
-
-template <typename InitialGuess>
-SMP::Error_code texture(const Soup& soup, UV& uv, const Settings& s, SMP::Texture_polygon_mesh_report& report)
-{
-  SMP::Texture_polygon_mesh_options<SMP::Norm_preserving_triangle_mesh, InitialGuess> options;
-  options.texture_fit = s.fit;
-  options.tiles_u = s.tiles_u;
-  options.tiles_v = s.tiles_v;
-  options.sign_refinement_rounds = s.refine_signs ? 10 : 0;
-  options.euclidean_refinement_iterations = s.refine_euclidean ? 1000 : 0;
-  options.weld_coincident_vertices = s.weld;
-  if(s.fixed_pair)
-  {
-    if(s.fixed_pair->first >= soup.points.size() || s.fixed_pair->second >= soup.points.size())
-    {
-      report.message = "--fixed-pair: the file has " + std::to_string(soup.points.size()) + " vertices";
-      return SMP::ERROR_WRONG_PARAMETER;
-    }
-    options.fixed_pair = std::make_pair(Vertex(Vertex::size_type(s.fixed_pair->first)),
-                                        Vertex(Vertex::size_type(s.fixed_pair->second)));
-  }
-  return SMP::texture_polygon_soup(soup.points, soup.polygons, CGAL::make_property_map(uv), options, &report);
 }
 
 // Why CGAL 5.5's PLY soup reader cannot read the vertices of the file at `path`, if it cannot:
@@ -476,10 +457,15 @@ int run(int argc, char** argv)
   const Kernel::Point_2 no_uv(std::nan(""), std::nan(""));
   UV uv(soup.points.size(), no_uv);
   SMP::Texture_polygon_mesh_report report;
+  if(s.texture.fixed_pair &&
+     (s.texture.fixed_pair->first >= soup.points.size() || s.texture.fixed_pair->second >= soup.points.size()))
+  {
+    std::cerr << "error: --fixed-pair: the file has " << soup.points.size() << " vertices\n";
+    return 1;
+  }
   const SMP::Error_code status = with_progress("texturing " + std::to_string(soup.points.size()) + " vertices", [&] {
-    if(s.guess == "combination") return texture<SMP::Combination_initial_guess>(soup, uv, s, report);
-    if(s.guess == "graph") return texture<SMP::Graph_based_initial_guess>(soup, uv, s, report);
-    return texture<SMP::XY_min_max_initial_guess>(soup, uv, s, report);
+    return np_examples::texture_with_settings(soup.points, soup.polygons, CGAL::make_property_map(uv), s.texture, report,
+                                              [](const SMP::Norm_preserving_progress&) { return true; });
   });
   if(status != SMP::OK)
   {
@@ -495,13 +481,18 @@ int run(int argc, char** argv)
 
   std::size_t active = 0, constraints = 0, iterations = 0;
   double initial = 0, kkt = 0;
+  std::string solver, stopped; // the solver and its setting; why a solve stopped short of its tolerance
   for(const SMP::Norm_preserving_report& r : report.reports)
   {
+    if(!r.solver.method.empty())
+      solver = r.solver.method;
+    if(stopped.empty())
+      stopped = r.solver.message;
     active += r.active_constraints;
     constraints += r.constraints;
-    iterations = std::max<std::size_t>(iterations, std::size_t(r.solver_iterations));
+    iterations = std::max<std::size_t>(iterations, std::size_t(r.solver.iterations));
     initial += r.initial_objective;
-    kkt = std::max(kkt, r.kkt_residual);
+    kkt = std::max(kkt, r.solver.kkt_residual);
   }
   const SMP::Parameterization_distortion d =
     SMP::measure_soup_distortion(soup.points, soup.polygons, CGAL::make_property_map(uv), CGAL::make_property_map(has_uv));
@@ -516,14 +507,16 @@ int run(int argc, char** argv)
           << active << "/" << constraints << " sign constraints active, " << iterations
           << " solver iterations, KKT residual " << kkt << ", within " << report.optimality_gap
           << " of the optimum (certified)\n"
+          << "solver: " << solver << (stopped.empty() ? std::string() : "; " + stopped) << '\n'
           << "time: " << report.seconds << " s\n"
           << "distortion: edge-length error " << d.edge_length_error << " (L1 " << d.l1_edge_length_error
           << "), flipped faces " << d.flipped_faces << "/" << d.faces << " ("
           << 100 * d.flipped_area_fraction << "% of the area)\n";
   std::ostringstream details;
   details << summary.str()
-          << "initial guess: " << s.guess << (s.refine_signs ? ", sign refinement" : "")
-          << (s.refine_euclidean ? ", Euclidean refinement" : "") << ", tiles: " << s.tiles_u << "x" << s.tiles_v << '\n'
+          << "initial guess: " << s.texture.guess << (s.texture.refine_signs ? ", sign refinement" : "")
+          << (s.texture.refine_euclidean ? ", Euclidean refinement" : "") << ", tiles: " << s.texture.tiles_u << "x"
+          << s.texture.tiles_v << '\n'
           << "scale of the best fit to 3D lengths: " << d.scale << '\n'
           << "mean / max angle distortion (degrees): " << d.mean_angle_distortion << " / " << d.max_angle_distortion << '\n'
           << "area distortion (RMS log ratio): " << d.area_distortion << '\n'

@@ -68,9 +68,9 @@ void texture_soup(const std::vector<Point_3>& points, const std::vector<std::vec
                   const std::vector<bool>& on_face)
 {
   std::vector<Point_2> uv(points.size(), sentinel);
-  SMP::Texture_polygon_mesh_options<SMP::Norm_preserving_triangle_mesh, Guess> options;
   SMP::Texture_polygon_mesh_report report;
-  const SMP::Error_code status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv), options, &report);
+  const SMP::Error_code status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv),
+                                                           SMP::parameters::initial_guess(Guess()).report(report));
   check_result(status, report, uv, on_face);
 }
 
@@ -79,9 +79,9 @@ void texture_mesh(const Mesh& mesh)
 {
   Mesh copy = mesh;
   auto uvmap = copy.add_property_map<Mesh::Vertex_index, Point_2>("v:uv", sentinel).first;
-  SMP::Texture_polygon_mesh_options<Mesh, Guess> options;
   SMP::Texture_polygon_mesh_report report;
-  const SMP::Error_code status = SMP::texture_polygon_mesh(copy, uvmap, options, &report);
+  const SMP::Error_code status =
+    SMP::texture_polygon_mesh(copy, uvmap, SMP::parameters::initial_guess(Guess()).report(report));
   std::vector<Point_2> uv;
   std::vector<bool> on_face;
   for(auto v : vertices(copy))

@@ -32,7 +32,6 @@ using np_test::Point_3;
 using np_test::Polygons;
 using np_test::sentinel;
 using np_test::Textured_soup;
-using Exact_soup = np_test::Basic_textured_soup<SMP::Interior_point_quadratic_program_traits<> >;
 
 const double pi = 3.14159265358979323846;
 
@@ -290,14 +289,13 @@ TEST_P(SoupDefect, SmallIsTexturedAtTheOptimumAndDeterministically)
 
   // Independent checks: the exact optimum (interior point), and Eq. 3 recomputed from uvs in
   // mesh units (one layout translation per component changes no difference).
-  Exact_soup exact(soup.points, soup.polygons);
+  Textured_soup exact(soup.points, soup.polygons,
+                      SMP::parameters::solver(SMP::Interior_point_quadratic_program_traits<>()));
   ASSERT_EQ(exact.status, SMP::OK) << exact.report.message;
   EXPECT_GE(t.report.objective, exact.report.objective * (1 - 1e-9) - 1e-12);
   EXPECT_LE(t.report.objective, exact.report.objective * (1 + 1e-4) + 1e-12);
   EXPECT_LE(t.report.objective, exact.report.objective * (1 + t.report.optimality_gap) + 1e-12); // the certificate
-  Textured_soup::Soup_options unfitted;
-  unfitted.texture_fit = SMP::NORM_PRESERVING_NO_FIT;
-  Textured_soup mesh_units(soup.points, soup.polygons, unfitted);
+  Textured_soup mesh_units(soup.points, soup.polygons, SMP::parameters::texture_fit(SMP::NORM_PRESERVING_NO_FIT));
   ASSERT_EQ(mesh_units.status, SMP::OK);
   EXPECT_NEAR(recomputed_objective(soup, mesh_units.uv), mesh_units.report.objective,
               1e-9 * (1 + mesh_units.report.objective));
@@ -326,9 +324,7 @@ TEST(AnySoup, WeldedVerticesShareTheirUvAndKeepingThemApartSplitsTheMesh)
   for(std::size_t j = 0; j < 12; ++j)
     EXPECT_EQ(welded.uv[6 * 12 + j], welded.uv[144 + j]) << "a seam at row " << j;
 
-  Textured_soup::Soup_options apart;
-  apart.weld_coincident_vertices = false;
-  Textured_soup kept(soup.points, soup.polygons, apart);
+  Textured_soup kept(soup.points, soup.polygons, SMP::parameters::weld_coincident_vertices(false));
   ASSERT_EQ(kept.status, SMP::OK);
   EXPECT_EQ(kept.report.welded_vertices, 0u);
   EXPECT_EQ(kept.report.components, 2u);
@@ -357,7 +353,10 @@ TEST(AnySoup, TheEdgeGraphHoldsEachEdgeOnceInOrder)
     for(const std::vector<std::size_t>& t : soup.polygons)
       for(std::size_t k = 0; k < 3; ++k)
         expected.insert({(std::min)(t[k], t[(k + 1) % 3]), (std::max)(t[k], t[(k + 1) % 3])});
-    const NP::Soup_graph graph = NP::build_soup_graph(soup.points, soup.polygons, true);
+    std::vector<std::array<double, 3> > positions;
+    for(const Point_3& p : soup.points)
+      positions.push_back({p.x(), p.y(), p.z()});
+    const NP::Soup_graph graph = NP::build_soup_graph(positions, soup.polygons, true);
     const std::vector<std::array<std::size_t, 2> > sorted(expected.begin(), expected.end());
     EXPECT_EQ(graph.edges, sorted);
   }
@@ -366,10 +365,7 @@ TEST(AnySoup, TheEdgeGraphHoldsEachEdgeOnceInOrder)
 TEST(AnySoup, AFixedPairThatIsNotAnEdgeFailsBeforeAnySolve)
 {
   const Soup soup = grid(12);
-  Textured_soup::Soup_options options;
-  options.fixed_pair = std::make_pair(SMP::Norm_preserving_triangle_mesh::Vertex_index(0),
-                                      SMP::Norm_preserving_triangle_mesh::Vertex_index(100));
-  Textured_soup t(soup.points, soup.polygons, options);
+  Textured_soup t(soup.points, soup.polygons, SMP::parameters::fixed_pair(0, 100));
   EXPECT_EQ(t.status, SMP::ERROR_WRONG_PARAMETER);
   EXPECT_NE(t.report.message.find("not the two ends of an edge"), std::string::npos) << t.report.message;
   EXPECT_TRUE(t.report.reports.empty());
@@ -407,9 +403,7 @@ TEST_P(CollectionSoup, GivesTheObjectiveOfTheMeshPath)
     for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
       polygons.back().push_back(std::size_t(v));
   }
-  Textured_soup::Soup_options apart;
-  apart.weld_coincident_vertices = false;
-  Textured_soup soup(points, polygons, apart);
+  Textured_soup soup(points, polygons, SMP::parameters::weld_coincident_vertices(false));
   ASSERT_EQ(soup.status, SMP::OK) << soup.report.message;
   if(soup.report.components != 1 || soup.report.isolated_vertices != 0)
     GTEST_SKIP() << "several components";

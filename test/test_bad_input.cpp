@@ -33,7 +33,6 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 using np_test::Halfedge;
 using np_test::Mapped_mesh;
 using np_test::Mesh;
-using np_test::Options;
 using np_test::Parameterizer;
 using np_test::Point_2;
 using np_test::Point_3;
@@ -203,9 +202,7 @@ TEST(BadInput, DuplicateVerticesOnASeamAreWeldedOrKeptApart)
   EXPECT_EQ(welded.uv[0], welded.uv[4]);
   EXPECT_EQ(welded.uv[2], welded.uv[5]);
 
-  SMP::Texture_polygon_mesh_options<SMP::Norm_preserving_triangle_mesh> apart;
-  apart.weld_coincident_vertices = false;
-  Textured_soup soup(points, faces, apart);
+  Textured_soup soup(points, faces, SMP::parameters::weld_coincident_vertices(false));
   ASSERT_EQ(soup.status, SMP::OK) << soup.report.message;
   EXPECT_EQ(soup.report.components, 2u);
   for(const Point_2& p : soup.uv)
@@ -379,16 +376,12 @@ TEST(BadInput, FixedPairThatIsNotAnEdgeOrSpansComponents)
   // Through the whole-mesh call, on two tetrahedra (which share the origin: kept apart).
   Mesh two = np_test::tetrahedron();
   CGAL::copy_face_graph(scaled(np_test::tetrahedron(), 2), two);
-  Options options;
-  options.weld_coincident_vertices = false;
-  options.fixed_pair = std::make_pair(Vertex(0), Vertex(5));
-  expect_failure(Textured(two, options), SMP::ERROR_WRONG_PARAMETER, "not in the same connected component");
-  options.fixed_pair = std::make_pair(Vertex(0), Vertex(0));
-  expect_failure(Textured(two, options), SMP::ERROR_WRONG_PARAMETER, "not the two ends of an edge");
-  SMP::Texture_polygon_mesh_options<SMP::Norm_preserving_triangle_mesh> soup_options;
-  soup_options.fixed_pair = std::make_pair(SMP::Norm_preserving_triangle_mesh::Vertex_index(0),
-                                           SMP::Norm_preserving_triangle_mesh::Vertex_index(7));
-  Textured_soup soup({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0)}, {{0, 1, 2}}, soup_options);
+  const auto apart = SMP::parameters::weld_coincident_vertices(false);
+  expect_failure(Textured(two, apart.fixed_pair(Vertex(0), Vertex(5))), SMP::ERROR_WRONG_PARAMETER,
+                 "not in the same connected component");
+  expect_failure(Textured(two, apart.fixed_pair(Vertex(0), Vertex(0))), SMP::ERROR_WRONG_PARAMETER,
+                 "not the two ends of an edge");
+  Textured_soup soup({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0)}, {{0, 1, 2}}, SMP::parameters::fixed_pair(0, 7));
   expect_failure(soup, SMP::ERROR_WRONG_PARAMETER, "not a vertex of the mesh");
 }
 

@@ -242,8 +242,8 @@ TEST(NormPreservingQP, ReachesTheCertifiedOptimumOnNefertiti)
   parameterizer.set_automatic_fixed_pair();
   EXPECT_NEAR(solved_objective(np_test::load_mesh("nefertiti"), parameterizer), reference, 1e-8 * reference);
   const SMP::Norm_preserving_report& report = parameterizer.report();
-  EXPECT_TRUE(report.has_solver_statistics);
-  EXPECT_LT(report.kkt_residual, 1e-8);
+  EXPECT_TRUE(report.solver.has_statistics);
+  EXPECT_LT(report.solver.kkt_residual, 1e-8);
   EXPECT_GT(report.active_constraints, 0u);
 
   // The default (ADMM) solver: feasible, so not below the optimum, and within 1e-4 of it.

@@ -80,7 +80,7 @@ struct Graph_runs
   static UVs texture(const Graph& mesh, SMP::Texture_polygon_mesh_report& report)
   {
     auto uv = unset_uvs(mesh);
-    const SMP::Error_code status = SMP::texture_polygon_mesh(mesh, uv, SMP::Texture_polygon_mesh_options<Graph>(), &report);
+    const SMP::Error_code status = SMP::texture_polygon_mesh(mesh, uv, SMP::parameters::report(report));
     EXPECT_EQ(status, SMP::OK) << report.message;
     return by_vertex_order(mesh, uv);
   }
@@ -240,7 +240,7 @@ struct Indexed_mesh_type
   UVs texture(SMP::Texture_polygon_mesh_report& report)
   {
     std::vector<Point_2> uv(mesh.xyz.size(), Point_2(-1, -1));
-    const SMP::Error_code status = SMP::texture_indexed_mesh(mesh, CGAL::make_property_map(uv), {}, &report);
+    const SMP::Error_code status = SMP::texture_indexed_mesh(mesh, CGAL::make_property_map(uv), SMP::parameters::report(report));
     EXPECT_EQ(status, SMP::OK) << report.message;
     UVs result;
     for(const Point_2& p : uv) result.push_back({p.x(), p.y()});

@@ -100,7 +100,7 @@ TEST_P(RealMesh, SolvesToAFeasibleOptimumWithTheFixedPairInPlace)
 
   // Feasible exactly, hence no better than the optimum, which the exact interior-point
   // solver finds (KKT residual 1e-8); within the default tolerance's 1e-4 of it.
-  EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED);
+  EXPECT_EQ(run.report.solver.status, SMP::NORM_PRESERVING_SOLVER_CONVERGED);
   EXPECT_EQ(run.report.max_constraint_violation, 0.);
   EXPECT_LE(run.report.objective, run.report.initial_objective);
   EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective);
@@ -109,13 +109,13 @@ TEST_P(RealMesh, SolvesToAFeasibleOptimumWithTheFixedPairInPlace)
   exact_parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   exact.parameterize(exact_parameterizer, h);
   ASSERT_EQ(exact.status, SMP::OK) << exact.report.message;
-  EXPECT_LT(exact.report.kkt_residual, 1e-8);
+  EXPECT_LT(exact.report.solver.kkt_residual, 1e-8);
   EXPECT_LE(exact.report.max_constraint_violation, 1e-9 * mean_edge_length(run.mesh));
   EXPECT_GE(run.report.objective, exact.report.objective * (1 - 1e-8));
   EXPECT_LE(run.report.objective, exact.report.objective * (1 + 1e-4));
   // The certificate bounds that distance, and tells something.
-  EXPECT_LE(run.report.objective, exact.report.objective * (1 + run.report.optimality_gap) * (1 + 1e-12));
-  EXPECT_LT(run.report.optimality_gap, 1e-2);
+  EXPECT_LE(run.report.objective, exact.report.objective * (1 + run.report.solver.optimality_gap) * (1 + 1e-12));
+  EXPECT_LT(run.report.solver.optimality_gap, 1e-2);
 
   // The fixed pair: source(h) at the origin, target(h) along the XY-MinMax direction at L1
   // distance equal to the edge's 3D L1 length.
@@ -168,12 +168,12 @@ TEST(NormPreservingADMMSolver, CertifiedModeReachesTheOptimum)
     ASSERT_EQ(run.status, SMP::OK) << name;
     ASSERT_EQ(exact.status, SMP::OK) << name;
     ASSERT_EQ(fast.status, SMP::OK) << name;
-    EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << name;
+    EXPECT_EQ(run.report.solver.status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << name;
     EXPECT_EQ(run.report.max_constraint_violation, 0.) << name;
-    EXPECT_LE(run.report.optimality_gap, 1e-9) << name;
+    EXPECT_LE(run.report.solver.optimality_gap, 1e-9) << name;
     EXPECT_NEAR(run.report.objective, exact.report.objective, 1e-8 * exact.report.objective) << name;
-    EXPECT_LE(run.report.solver_iterations, fast.report.solver_iterations) << name;
-    EXPECT_LE(fast.report.solver_iterations - run.report.solver_iterations, 5) << name; // a check
+    EXPECT_LE(run.report.solver.iterations, fast.report.solver.iterations) << name;
+    EXPECT_LE(fast.report.solver.iterations - run.report.solver.iterations, 5) << name; // a check
   }
 }
 
@@ -240,9 +240,9 @@ TEST(NormPreservingADMMSolver, StopsAndCertifiesAtAZeroOptimum)
     parameterizer.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
     run.parameterize(parameterizer, *halfedges(run.mesh).begin());
     ASSERT_EQ(run.status, SMP::OK) << run.report.message;
-    EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << certified;
-    EXPECT_LT(run.report.solver_iterations, 5000) << certified; // of a limit of 20,000
-    EXPECT_LE(run.report.optimality_gap, certified ? 1e-9 : 1e-4) << certified;
+    EXPECT_EQ(run.report.solver.status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << certified;
+    EXPECT_LT(run.report.solver.iterations, 5000) << certified; // of a limit of 20,000
+    EXPECT_LE(run.report.solver.optimality_gap, certified ? 1e-9 : 1e-4) << certified;
     EXPECT_LE(run.report.objective, 1e-12 * run.report.initial_objective) << certified;
     EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective) << certified;
   }
@@ -264,12 +264,12 @@ TEST(NormPreservingADMMSolver, DefaultModePolishesASlowTail)
     exact.parameterize(exact_parameterizer, h);
     ASSERT_EQ(run.status, SMP::OK) << name << ": " << run.report.message;
     ASSERT_EQ(exact.status, SMP::OK) << name << ": " << exact.report.message;
-    EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << name;
-    EXPECT_LE(run.report.solver_iterations, 300) << name;
+    EXPECT_EQ(run.report.solver.status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << name;
+    EXPECT_LE(run.report.solver.iterations, 300) << name;
     EXPECT_EQ(run.report.max_constraint_violation, 0.) << name;
-    EXPECT_LE(run.report.optimality_gap, SMP::internal::Norm_preserving::admm_default_tolerance) << name;
+    EXPECT_LE(run.report.solver.optimality_gap, SMP::internal::Norm_preserving::admm_default_tolerance) << name;
     EXPECT_GE(run.report.objective, exact.report.objective * (1 - 1e-8)) << name;
-    EXPECT_LE(run.report.objective, exact.report.objective * (1 + run.report.optimality_gap) * (1 + 1e-12)) << name;
+    EXPECT_LE(run.report.objective, exact.report.objective * (1 + run.report.solver.optimality_gap) * (1 + 1e-12)) << name;
   }
 }
 
@@ -317,14 +317,14 @@ TEST(NormPreservingADMMSolver, HandsAStalledTailToTheInteriorPoint)
     Parameterizer parameterizer(SMP::XY_min_max_initial_guess(), solver);
     run.parameterize(parameterizer, *halfedges(run.mesh).begin());
     ASSERT_EQ(run.status, SMP::OK) << run.report.message;
-    EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << certified;
-    EXPECT_EQ(run.report.solver_iterations, SMP::internal::Norm_preserving::interior_point_after) << certified;
+    EXPECT_EQ(run.report.solver.status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << certified;
+    EXPECT_EQ(run.report.solver.iterations, SMP::internal::Norm_preserving::Admm_settings().interior_point_after) << certified;
     EXPECT_EQ(run.report.max_constraint_violation, 0.) << certified;
-    EXPECT_LE(run.report.optimality_gap, certified ? 1e-9 : SMP::internal::Norm_preserving::admm_default_tolerance)
+    EXPECT_LE(run.report.solver.optimality_gap, certified ? 1e-9 : SMP::internal::Norm_preserving::admm_default_tolerance)
       << certified;
     const double distance = run.report.objective / exact.report.objective - 1;
     EXPECT_GE(distance, -1e-8) << certified;
-    EXPECT_LE(distance, run.report.optimality_gap * (1 + 1e-12) + 1e-9) << certified;
+    EXPECT_LE(distance, run.report.solver.optimality_gap * (1 + 1e-12) + 1e-9) << certified;
     EXPECT_LE(distance, certified ? 1e-9 : 1e-6) << certified;
   }
 }
@@ -333,15 +333,15 @@ TEST(NormPreservingADMMSolver, HandsAStalledTailToTheInteriorPoint)
 // (a KKT point whose certified gap rounding keeps above it), which the warning names.
 void expect_exact_mode_status(const SMP::Norm_preserving_report& report, const std::string& name)
 {
-  if(report.optimality_gap > 1e-9)
+  if(report.solver.optimality_gap > 1e-9)
   {
-    EXPECT_EQ(report.solver_status, SMP::NORM_PRESERVING_SOLVER_PRECISION_LIMIT) << name;
-    EXPECT_NE(report.warning.find("precision"), std::string::npos) << name << ": " << report.warning;
+    EXPECT_EQ(report.solver.status, SMP::NORM_PRESERVING_SOLVER_PRECISION_LIMIT) << name;
+    EXPECT_NE(report.solver.message.find("precision"), std::string::npos) << name << ": " << report.solver.message;
   }
   else
   {
-    EXPECT_EQ(report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << name;
-    EXPECT_TRUE(report.warning.empty()) << name << ": " << report.warning;
+    EXPECT_EQ(report.solver.status, SMP::NORM_PRESERVING_SOLVER_CONVERGED) << name;
+    EXPECT_TRUE(report.solver.message.empty()) << name << ": " << report.solver.message;
   }
 }
 
@@ -355,16 +355,12 @@ void expect_exact_mode_status(const SMP::Norm_preserving_report& report, const s
 TEST(NormPreservingADMMSolver, ATiltedTubeReachesTheOptimumInBothModes)
 {
   const Mesh tube = tube_of_rings(500, 30);
-  SMP::Texture_polygon_mesh_options<Mesh, SMP::XY_min_max_initial_guess,
-                                    SMP::Interior_point_quadratic_program_traits<double> > exact_options;
-  const np_test::Textured exact(tube, exact_options);
+  const np_test::Textured exact(tube, SMP::parameters::solver(SMP::Interior_point_quadratic_program_traits<double>()));
   ASSERT_EQ(exact.status, SMP::OK) << exact.report.message;
   for(const bool certified : {false, true})
   {
-    np_test::Options options;
-    if(certified)
-      options.solver = SMP::Norm_preserving_ADMM_solver::certified();
-    np_test::Textured run(tube, options);
+    np_test::Textured run(tube, SMP::parameters::solver(certified ? SMP::Norm_preserving_ADMM_solver::certified()
+                                                                  : SMP::Norm_preserving_ADMM_solver()));
     ASSERT_EQ(run.status, SMP::OK) << run.report.message;
     ASSERT_EQ(run.report.reports.size(), 1u);
     const SMP::Norm_preserving_report& report = run.report.reports[0];
@@ -374,13 +370,13 @@ TEST(NormPreservingADMMSolver, ATiltedTubeReachesTheOptimumInBothModes)
     if(certified)
     {
       expect_exact_mode_status(report, "tilted tube");
-      EXPECT_EQ(report.solver_iterations, SMP::internal::Norm_preserving::interior_point_after);
-      EXPECT_LE(report.optimality_gap, 5e-8);
+      EXPECT_EQ(report.solver.iterations, SMP::internal::Norm_preserving::Admm_settings().interior_point_after);
+      EXPECT_LE(report.solver.optimality_gap, 5e-8);
     }
     else
     {
-      EXPECT_EQ(report.solver_status, SMP::NORM_PRESERVING_SOLVER_CONVERGED);
-      EXPECT_GT(report.solver_iterations, 20);
+      EXPECT_EQ(report.solver.status, SMP::NORM_PRESERVING_SOLVER_CONVERGED);
+      EXPECT_GT(report.solver.iterations, 20);
       EXPECT_LE(distance, 1e-4);
     }
   }
@@ -392,9 +388,7 @@ TEST(NormPreservingADMMSolver, ATiltedTubeReachesTheOptimumInBothModes)
 void expect_within_its_gap_of_the_optimum(const Mesh& mesh, const np_test::Textured& run, double& distance)
 {
   distance = std::numeric_limits<double>::quiet_NaN();
-  np_test::Options certified;
-  certified.solver = SMP::Norm_preserving_ADMM_solver::certified();
-  const np_test::Textured exact(mesh, certified);
+  const np_test::Textured exact(mesh, SMP::parameters::solver(SMP::Norm_preserving_ADMM_solver::certified()));
   ASSERT_EQ(run.status, SMP::OK) << run.report.message;
   ASSERT_EQ(exact.status, SMP::OK) << exact.report.message;
   ASSERT_LE(exact.report.optimality_gap, 1e-9);
@@ -453,9 +447,7 @@ TEST(NormPreservingADMMSolver, ARisingObjectiveDoesNotStopTheDefault)
 TEST(NormPreservingADMMSolver, CertifiedModeHoldsAGivenGap)
 {
   const Mesh mesh = subdivided_poly2x();
-  np_test::Options given;
-  given.solver = SMP::Norm_preserving_ADMM_solver::certified(1e-4);
-  const np_test::Textured run(mesh, given);
+  const np_test::Textured run(mesh, SMP::parameters::solver(SMP::Norm_preserving_ADMM_solver::certified(1e-4)));
   double distance;
   expect_within_its_gap_of_the_optimum(mesh, run, distance);
   EXPECT_LE(run.report.optimality_gap, 1e-4);
@@ -480,9 +472,9 @@ TEST(NormPreservingADMMSolver, CertifiedModeEndsAtAKktPoint)
   ASSERT_EQ(run.status, SMP::OK) << run.report.message;
   ASSERT_EQ(exact.status, SMP::OK) << exact.report.message;
   expect_exact_mode_status(run.report, "blade");
-  EXPECT_LT(run.report.solver_iterations, SMP::internal::Norm_preserving::interior_point_after);
+  EXPECT_LT(run.report.solver.iterations, SMP::internal::Norm_preserving::Admm_settings().interior_point_after);
   EXPECT_EQ(run.report.max_constraint_violation, 0.);
-  EXPECT_LE(run.report.optimality_gap, 5e-8);
+  EXPECT_LE(run.report.solver.optimality_gap, 5e-8);
   const double distance = run.report.objective / exact.report.objective - 1;
   EXPECT_LE(distance, 1e-12);
   EXPECT_GE(distance, -1e-4);
@@ -497,10 +489,10 @@ TEST(NormPreservingADMMSolver, ReportsTheIterationLimitWithAFeasiblePoint)
   limited.set_texture_fit(SMP::NORM_PRESERVING_NO_FIT);
   run.parameterize(limited, *halfedges(run.mesh).begin());
   ASSERT_EQ(run.status, SMP::OK) << run.report.message;
-  EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_ITERATION_LIMIT);
-  EXPECT_EQ(run.report.solver_iterations, 20);
+  EXPECT_EQ(run.report.solver.status, SMP::NORM_PRESERVING_SOLVER_ITERATION_LIMIT);
+  EXPECT_EQ(run.report.solver.iterations, 20);
   EXPECT_TRUE(run.report.message.empty()) << run.report.message;
-  EXPECT_NE(run.report.warning.find("iteration limit"), std::string::npos);
+  EXPECT_NE(run.report.solver.message.find("iteration limit"), std::string::npos);
   EXPECT_EQ(run.report.max_constraint_violation, 0.);
   EXPECT_NEAR(eq3(run), run.report.objective, 1e-9 * run.report.initial_objective);
 
@@ -512,7 +504,7 @@ TEST(NormPreservingADMMSolver, ReportsTheIterationLimitWithAFeasiblePoint)
   ASSERT_EQ(exact.status, SMP::OK) << exact.report.message;
   const double distance = run.report.objective / exact.report.objective - 1;
   EXPECT_GT(distance, 1e-3);
-  EXPECT_GE(run.report.optimality_gap, distance);
+  EXPECT_GE(run.report.solver.optimality_gap, distance);
 }
 
 // On its time limit (zero: the first check) likewise.
@@ -523,9 +515,9 @@ TEST(NormPreservingADMMSolver, ReportsTheTimeLimitWithAFeasiblePoint)
                                                      SMP::Norm_preserving_ADMM_solver(1e-9, 20000, 0.));
   run.parameterize(limited, *halfedges(run.mesh).begin());
   ASSERT_EQ(run.status, SMP::OK) << run.report.message;
-  EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_TIME_LIMIT);
-  EXPECT_LT(run.report.solver_iterations, 20000);
-  EXPECT_NE(run.report.warning.find("time limit"), std::string::npos);
+  EXPECT_EQ(run.report.solver.status, SMP::NORM_PRESERVING_SOLVER_TIME_LIMIT);
+  EXPECT_LT(run.report.solver.iterations, 20000);
+  EXPECT_NE(run.report.solver.message.find("time limit"), std::string::npos);
   EXPECT_EQ(run.report.max_constraint_violation, 0.);
   EXPECT_LE(run.report.objective, run.report.initial_objective);
 }
@@ -549,7 +541,7 @@ TEST(NormPreservingSolverConcept, AFailedSolveLeavesTheMapUntouchedAndTheParamet
   run.parameterize(failing, *halfedges(run.mesh).begin());
   EXPECT_EQ(run.status, SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM);
   EXPECT_EQ(run.report.message, "the QP solver failed: no factorization");
-  EXPECT_EQ(run.report.solver_status, SMP::NORM_PRESERVING_SOLVER_FAILED);
+  EXPECT_EQ(run.report.solver.status, SMP::NORM_PRESERVING_SOLVER_FAILED);
   EXPECT_TRUE(run.untouched());
 
   // A parameterizer that failed (a fixed pair that is not an edge) gives, once set right, the
@@ -577,16 +569,11 @@ TEST(NormPreservingParameterizerErrors, TilingBelowOneByOne)
     Mapped_mesh run(np_test::tetrahedron());
     Parameterizer parameterizer;
     parameterizer.set_tiling(tiles[0], tiles[1]);
-    EXPECT_EQ(parameterizer.options().tiles_u, tiles[0]);
-    EXPECT_EQ(parameterizer.options().tiles_v, tiles[1]);
     run.parameterize(parameterizer, *halfedges(run.mesh).begin());
     EXPECT_EQ(run.status, SMP::ERROR_WRONG_PARAMETER);
     EXPECT_NE(run.report.message.find("tiling"), std::string::npos);
     EXPECT_TRUE(run.untouched());
-    np_test::Options options;
-    options.tiles_u = tiles[0];
-    options.tiles_v = tiles[1];
-    np_test::Textured textured(np_test::tetrahedron(), options);
+    np_test::Textured textured(np_test::tetrahedron(), SMP::parameters::tiling(tiles[0], tiles[1]));
     EXPECT_EQ(textured.status, SMP::ERROR_WRONG_PARAMETER);
     EXPECT_TRUE(textured.untouched());
   }
@@ -823,7 +810,7 @@ TEST(TwoColumnCholesky, DissectsWhereAmdSplitsUnevenly)
   {
     const NP::Sparse_matrix lower = free_laplacian(np_test::load_mesh(name));
     const std::size_t n = std::size_t(lower.rows());
-    ASSERT_LT(n, NP::cholmod_minimum_rows) << name;
+    ASSERT_LT(n, NP::Cholesky_settings::cholmod_minimum_rows) << name;
     const Eigen::SimplicialLLT<NP::Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > amd(lower);
     const std::vector<int> amd_positions(amd.permutationP().indices().data(), amd.permutationP().indices().data() + n);
     NP::Two_column_cholesky cholesky;
@@ -937,7 +924,7 @@ TEST(TwoColumnCholesky, RefusesAnIndefiniteMatrixOfEigensSize)
 {
   namespace NP = SMP::internal::Norm_preserving;
   const NP::Sparse_matrix indefinite = grid_matrix(100, 2, 3.);
-  ASSERT_LT(std::size_t(indefinite.rows()), NP::cholmod_minimum_rows);
+  ASSERT_LT(std::size_t(indefinite.rows()), NP::Cholesky_settings::cholmod_minimum_rows);
   NP::Two_column_cholesky cholesky;
   EXPECT_FALSE(cholesky.compute(indefinite));
 }
@@ -980,9 +967,9 @@ TEST(TwoColumnCholesky, OrdersByMetisOnlyWhereAmdFillsMuch)
   for(const auto& [lower, metis] : cases)
   {
     const std::size_t n = std::size_t(lower.rows());
-    ASSERT_GE(n, NP::cholmod_minimum_rows);
+    ASSERT_GE(n, NP::Cholesky_settings::cholmod_minimum_rows);
     const std::pair<std::vector<int>, double> amd = cholmod_order(lower, CHOLMOD_AMD);
-    EXPECT_EQ(amd.second >= NP::metis_fill_per_row * double(n), metis) << n << " rows";
+    EXPECT_EQ(amd.second >= NP::Cholesky_settings::metis_fill_per_row * double(n), metis) << n << " rows";
     NP::Two_column_cholesky cholesky;
     ASSERT_TRUE(cholesky.compute(lower)) << n << " rows";
     EXPECT_TRUE(cholesky.positions() == (metis ? cholmod_order(lower, CHOLMOD_METIS).first : amd.first)) << n << " rows";
@@ -1000,7 +987,7 @@ TEST(TwoColumnCholesky, RefusesAMatrixThatIsNotPositiveDefinite)
   namespace NP = SMP::internal::Norm_preserving;
   for(const NP::Sparse_matrix& indefinite : {grid_matrix(200, 2, 3.), grid_matrix(30, 3, 5.)})
   {
-    ASSERT_GE(std::size_t(indefinite.rows()), NP::cholmod_minimum_rows);
+    ASSERT_GE(std::size_t(indefinite.rows()), NP::Cholesky_settings::cholmod_minimum_rows);
     NP::Two_column_cholesky cholesky;
     EXPECT_FALSE(cholesky.compute(indefinite)) << indefinite.rows() << " rows";
   }
@@ -1050,10 +1037,10 @@ struct Admm_stop
   {
     namespace NP = SMP::internal::Norm_preserving;
     const std::size_t m = geometry.edges.size();
-    const NP::Admm_result result = NP::solve_sign_constrained_admm(
-      geometry, lengths, start.signs, start.fixed, NP::Admm_settings{NP::admm_default_tolerance, 20000, 60., false}, uv,
-      &state);
-    EXPECT_EQ(result.outcome, NP::Admm_outcome::CONVERGED);
+    const NP::Admm_settings settings{NP::admm_default_tolerance, 20000, 60., false};
+    SMP::Norm_preserving_solve_report report;
+    EXPECT_TRUE(NP::Sign_constrained_admm(geometry, lengths, start.signs, start.fixed, settings, uv, &state).solve(report));
+    EXPECT_EQ(report.status, SMP::NORM_PRESERVING_SOLVER_CONVERGED);
     const double near = 1e-4 * std::accumulate(lengths.begin(), lengths.end(), 0.) / double(m);
     active.resize(m);
     for(std::size_t e = 0; e < m; ++e)
@@ -1106,7 +1093,8 @@ struct Polish_round
   {
     return SMP::internal::Norm_preserving::solve_on_active_set(stop.geometry, stop.lengths, stop.start.signs,
                                                                stop.start.fixed, stop.order, active, from, rounds,
-                                                               estimate, uv, y);
+                                                               estimate, SMP::internal::Norm_preserving::Admm_settings(),
+                                                               uv, y);
   }
 
   double objective() const
@@ -1214,7 +1202,7 @@ TEST(ActiveSetPolish, SolvesAFewChangesOnTheLastFactorization)
     EXPECT_LE(first.stationarity(stop.active), 1e-12) << name;
     if(name == "armadillo") // CHOLMOD's factor (when configured with it)
     {
-      EXPECT_GE(std::size_t(rounds.factored.system.normal.rows()), NP::cholmod_minimum_rows);
+      EXPECT_GE(std::size_t(rounds.factored.system.normal.rows()), NP::Cholesky_settings::cholmod_minimum_rows);
     }
 
     // Changes of the active set, each splitting or joining clusters of `base`.
@@ -1253,7 +1241,7 @@ TEST(ActiveSetPolish, SolvesAFewChangesOnTheLastFactorization)
       return active;
     };
 
-    for(const std::size_t count : {std::size_t(5), 3 * NP::polish_border / 4}) // a narrow border and a wide one
+    for(const std::size_t count : {std::size_t(5), 3 * NP::Admm_settings().polish_border / 4}) // a narrow border and a wide one
     {
       const std::string at = name + ", " + std::to_string(count) + " changes";
       const NP::Active_set turned = changed(count);
@@ -1275,7 +1263,7 @@ TEST(ActiveSetPolish, SolvesAFewChangesOnTheLastFactorization)
         EXPECT_EQ(bordered.uv[f.index], f.target) << at;
     }
 
-    const NP::Active_set many = changed(4 * NP::polish_border);
+    const NP::Active_set many = changed(4 * NP::Admm_settings().polish_border);
     NP::Active_set_rounds many_rounds, many_none;
     Polish_round refactored(stop), from_scratch(stop);
     ASSERT_TRUE(refactored.solve(stop.active, stop.uv, many_rounds)) << name;
@@ -1308,7 +1296,7 @@ TEST(NormPreservingADMMSolver, GivesTheSameBitsOnOneThreadAsOnSeveral)
     }
     ASSERT_EQ(several.status, SMP::OK) << name << ": " << several.report.message;
     ASSERT_EQ(one.status, SMP::OK) << name << ": " << one.report.message;
-    EXPECT_EQ(several.report.solver_iterations, one.report.solver_iterations) << name;
+    EXPECT_EQ(several.report.solver.iterations, one.report.solver.iterations) << name;
     for(Vertex v : vertices(several.mesh))
       ASSERT_EQ(get(several.uv, v), get(one.uv, v)) << name;
   }

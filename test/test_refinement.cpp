@@ -300,7 +300,7 @@ TEST(EuclideanRefinementStart, ALooseQPLeadsToTheSameStress)
     parameterizer.set_euclidean_refinement(1000);
     loose.parameterize(parameterizer, *halfedges(loose.mesh).begin());
     ASSERT_EQ(loose.status, SMP::OK) << loose.report.message;
-    EXPECT_LT(loose.report.solver_iterations, tight.report.solver_iterations) << name;
+    EXPECT_LT(loose.report.solver.iterations, tight.report.solver.iterations) << name;
     EXPECT_NEAR(stress(loose.mesh, loose.uv), stress(tight.mesh, tight.uv), 0.05 * stress(tight.mesh, tight.uv)) << name;
   }
 }
@@ -373,10 +373,8 @@ TEST(Refinement, RefusesNegativeLimitsAndTolerances)
 // The whole-mesh call passes the options to every component.
 TEST(Refinement, WholeMeshCallTakesTheOptions)
 {
-  np_test::Options options;
-  options.sign_refinement_rounds = 3;
-  options.euclidean_refinement_iterations = 50;
-  const np_test::Textured textured(np_test::load_mesh("cow"), options);
+  const np_test::Textured textured(np_test::load_mesh("cow"),
+                                   SMP::parameters::sign_refinement(3).euclidean_refinement(50));
   ASSERT_EQ(textured.status, SMP::OK) << textured.report.message;
   ASSERT_EQ(textured.report.reports.size(), 1u);
   EXPECT_GE(textured.report.reports[0].sign_refinement_rounds, 1);

@@ -22,7 +22,6 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 using Vertex = Mesh::Vertex_index;
 using Halfedge = Mesh::Halfedge_index;
 using Parameterizer = SMP::Norm_preserving_parameterizer_3<Mesh>;
-using Options = SMP::Texture_polygon_mesh_options<Mesh>;
 
 const Point_2 sentinel(-123.5, 456.25);
 
@@ -54,7 +53,7 @@ struct Mapped_mesh
   }
 };
 
-// `texture_polygon_mesh()` on `mesh`, with options of any guess and solver.
+// `texture_polygon_mesh()` on `mesh`, with the package's named parameters `np` if given.
 struct Textured
 {
   Mesh mesh;
@@ -62,11 +61,16 @@ struct Textured
   SMP::Texture_polygon_mesh_report report;
   SMP::Error_code status = SMP::OK;
 
-  template <typename Call_options = Options>
-  explicit Textured(Mesh m, const Call_options& options = Call_options()) : mesh(std::move(m))
+  explicit Textured(Mesh m) : mesh(std::move(m))
   {
     uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
-    status = SMP::texture_polygon_mesh(mesh, uv, options, &report);
+    status = SMP::texture_polygon_mesh(mesh, uv, SMP::parameters::report(report));
+  }
+  template <typename NamedParameters>
+  Textured(Mesh m, const NamedParameters& np) : mesh(std::move(m))
+  {
+    uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
+    status = SMP::texture_polygon_mesh(mesh, uv, np.report(report));
   }
   bool untouched() const
   {
@@ -78,29 +82,32 @@ struct Textured
 
 using Polygons = std::vector<std::vector<std::size_t> >;
 
-// `texture_polygon_soup()` on `points` and `polygons`, into a uv vector filled with the sentinel.
-template <typename Solver = SMP::Norm_preserving_ADMM_solver>
-struct Basic_textured_soup
+// `texture_polygon_soup()` on `points` and `polygons`, into a uv vector filled with the
+// sentinel, with the package's named parameters `np` if given.
+struct Textured_soup
 {
-  using Soup_options = SMP::Texture_polygon_mesh_options<SMP::Norm_preserving_triangle_mesh,
-                                                         SMP::XY_min_max_initial_guess, Solver>;
   std::vector<Point_3> points;
   Polygons polygons;
   std::vector<Point_2> uv;
   SMP::Texture_polygon_mesh_report report;
   SMP::Error_code status = SMP::OK;
 
-  Basic_textured_soup(std::vector<Point_3> p, Polygons f, const Soup_options& options = {})
+  Textured_soup(std::vector<Point_3> p, Polygons f)
     : points(std::move(p)), polygons(std::move(f)), uv(points.size(), sentinel)
   {
-    status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv), options, &report);
+    status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv), SMP::parameters::report(report));
+  }
+  template <typename NamedParameters>
+  Textured_soup(std::vector<Point_3> p, Polygons f, const NamedParameters& np)
+    : points(std::move(p)), polygons(std::move(f)), uv(points.size(), sentinel)
+  {
+    status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv), np.report(report));
   }
   bool untouched() const
   {
     return std::all_of(uv.begin(), uv.end(), [](const Point_2& p) { return p == sentinel; });
   }
 };
-using Textured_soup = Basic_textured_soup<>;
 
 inline bool is_finite(const Point_2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
 

@@ -68,6 +68,7 @@ public:
     namespace NP = internal::Norm_preserving;
     typedef std::chrono::steady_clock Clock;
     report = Norm_preserving_solve_report();
+    report.method = "a QuadraticProgramTraits model";
     Clock::time_point start = Clock::now();
     QuadraticProgramTraits qp = m_qp;
     NP::assemble_sign_constrained_qp(problem.geometry, problem.lengths, problem.signs, problem.fixed, qp);

@@ -11,7 +11,6 @@
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_ADMM_solver.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
-#include <CGAL/Surface_mesh_parameterization/Norm_preserving_options.h>
 #include <CGAL/Surface_mesh_parameterization/XY_min_max_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Mesh_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Pipeline.h>
@@ -132,11 +131,6 @@ public:
     m_pipeline.options().euclidean_refinement_tolerance = tolerance;
   }
 
-  /// sets every option at once (`weld_coincident_vertices` does not apply to one component).
-  void set_options(const Norm_preserving_options& options) { m_pipeline.options() = options; }
-  /// the options, as the setters left them.
-  const Norm_preserving_options& options() const { return m_pipeline.options(); }
-
   /// what the last call of `parameterize()` did.
   const Norm_preserving_report& report() const { return m_report; }
   /// the vertices that the last successful call of `parameterize()` fixed.
@@ -185,8 +179,8 @@ public:
       }
     m_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Norm_preserving_timings& t = m_report.timings;
-    m_report.timings.write_back = (std::max)(0., m_report.seconds - t.extraction - t.guess - t.assembly - t.factorization
-                                                   - t.iterations - t.sign_refinement - t.euclidean_refinement);
+    m_report.timings.write_back = (std::max)(0., m_report.seconds - t.extraction - t.guess - t.solve - t.sign_refinement
+                                                   - t.euclidean_refinement);
     return m_report.status;
   }
 

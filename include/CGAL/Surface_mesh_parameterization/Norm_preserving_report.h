@@ -33,17 +33,40 @@ enum Norm_preserving_solver_status
 };
 
 /// \ingroup PkgNormPreservingParameterizationTypes
-/// Where the time of one `Norm_preserving_parameterizer_3::parameterize()` call went, in seconds.
+/// What one solve of the QP did, as the solver (a model of `NormPreservingSolver`) reports it.
+struct Norm_preserving_solve_report
+{
+  Norm_preserving_solver_status status = NORM_PRESERVING_SOLVER_FAILED; ///< how the solve ended
+  /// the solver and its setting, such as "ADMM, default quality (stopping rule at 2.5e-05)"
+  std::string method;
+  bool has_statistics = false;      ///< whether the solver reported the two fields below
+  int iterations = 0;               ///< iterations of the solver
+  double kkt_residual = 0;          ///< largest residual the solver reports, on the normalized QP (edge lengths ~ 1)
+  /// a certified upper bound on the relative distance `(f - f*) / f*` of the solution's
+  /// objective `f` to the optimum `f*` of the QP (near a zero optimum, relative to `1e-12`
+  /// times the objective of the zero map); 0 where there is nothing to solve, infinity for a
+  /// solver that certifies nothing
+  double optimality_gap = std::numeric_limits<double>::infinity();
+  double assembly_seconds = 0;      ///< setting up the linear algebra (the Laplacian, for the ADMM solver)
+  double factorization_seconds = 0; ///< factorizations done before iterating (the ADMM solver's Laplacian)
+  double iteration_seconds = 0;     ///< the rest of the solve
+  /// why the solve failed or stopped short of its tolerance (an iteration, time or precision
+  /// limit: the solution is then the best feasible point found); empty if it converged
+  std::string message;
+  bool interrupted = false;         ///< whether `Norm_preserving_problem::progress` stopped the solve
+};
+
+/// \ingroup PkgNormPreservingParameterizationTypes
+/// Where the time of one `Norm_preserving_parameterizer_3::parameterize()` call went, in
+/// seconds, but for the QP solve's own steps (`Norm_preserving_solve_report`).
 struct Norm_preserving_timings
 {
-  double extraction = 0;    ///< copying the component, choosing the fixed pair, normalizing
-  double guess = 0;         ///< the initial guess, the similarity transform and the signs
-  double assembly = 0;      ///< setting up the QP (the Laplacian, for the ADMM solver)
-  double factorization = 0; ///< the ADMM solver's Laplacian factorization (0 for other solvers)
-  double iterations = 0;    ///< the solver's iterations (the whole solve, for other solvers)
+  double extraction = 0;           ///< copying the component, choosing the fixed pair, normalizing
+  double guess = 0;                ///< the initial guess, the similarity transform and the signs
+  double solve = 0;                ///< the QP solve (`Norm_preserving_report::solver` splits it)
   double sign_refinement = 0;      ///< the rounds of sign refinement (their QP solves included)
   double euclidean_refinement = 0; ///< the Euclidean refinement (a factorization included for solvers other than ADMM)
-  double write_back = 0;    ///< the rest: the final objective, the fit into texture space, the uv map
+  double write_back = 0;           ///< the rest: the final objective, the fit into texture space, the uv map
 };
 
 /// \ingroup PkgNormPreservingParameterizationTypes
@@ -53,7 +76,6 @@ struct Norm_preserving_report
 {
   Error_code status = OK;              ///< result of the call
   std::string message;                 ///< readable reason of a failure, empty on success
-  std::string warning;                 ///< what a success should make known (a solver stopped by a limit), else empty
   std::size_t vertices = 0;            ///< vertices of the parameterized component
   std::size_t edges = 0;               ///< edges of the component, one QP residual each
   /// the first fixed vertex: its index in the input for the whole-soup calls, in the
@@ -68,17 +90,9 @@ struct Norm_preserving_report
   double max_constraint_violation = 0; ///< largest violation of a sign constraint (of the final signs), at the same point
   std::size_t active_constraints = 0;  ///< sign constraints at equality (within 1e-8 mean edge length), at the same point
   std::size_t constraints = 0;         ///< sign constraints, two per edge
-  /// how the QP solver ended: on an iteration, time or precision limit the uvs are the best
-  /// feasible point it found, and `warning` says so
-  Norm_preserving_solver_status solver_status = NORM_PRESERVING_SOLVER_FAILED;
-  bool has_solver_statistics = false;  ///< whether the solver reported the two fields below
-  int solver_iterations = 0;           ///< iterations of the QP solver
-  double kkt_residual = 0;             ///< largest residual the solver reports on the normalized QP (edge lengths ~ 1)
-  /// a certified upper bound on the relative distance `(f - f*) / f*` of the QP solution's
-  /// objective to the optimum of the QP (before the refinements; near a zero optimum, relative
-  /// to 1e-12 times the objective of the zero map); 0 where there is nothing to solve,
-  /// infinity for a solver that certifies nothing
-  double optimality_gap = std::numeric_limits<double>::infinity();
+  /// what the QP solve did (the first solve, before the refinements): how it ended, its
+  /// certified distance to the optimum, its iterations and timings
+  Norm_preserving_solve_report solver;
   int sign_refinement_rounds = 0;      ///< rounds of sign refinement kept (each lowered Eq. 3)
   /// Eq. 3 at the QP solution, then after each round kept: non-increasing; empty when the
   /// sign refinement is off

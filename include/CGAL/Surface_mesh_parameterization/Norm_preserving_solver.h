@@ -12,8 +12,9 @@
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
 
 #include <array>
-#include <limits>
 #include <cstddef>
+#include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -43,24 +44,10 @@ struct Norm_preserving_problem
   /// the vertex values the signs were taken from (with ties oriented as if the vertex of
   /// higher index were the larger), if not the start point handed to `solve()`
   const std::vector<std::array<double, 2> >* order = nullptr;
-};
-
-/// \ingroup PkgNormPreservingParameterizationTypes
-/// What one solve of a model of `NormPreservingSolver` did.
-struct Norm_preserving_solve_report
-{
-  Norm_preserving_solver_status status = NORM_PRESERVING_SOLVER_FAILED; ///< how the solve ended
-  bool has_statistics = false;      ///< whether the solver reported the two fields below
-  int iterations = 0;               ///< iterations of the solver
-  double kkt_residual = 0;          ///< largest residual the solver reports
-  /// a certified upper bound on `(f - f*) / max(f*, 1e-12 f0)`, `f` the objective of the
-  /// solution, `f*` the optimum and `f0` that of the zero map (from a duality gap); infinity
-  /// if the solver certifies nothing
-  double optimality_gap = std::numeric_limits<double>::infinity();
-  double assembly_seconds = 0;      ///< setting up the linear algebra
-  double factorization_seconds = 0; ///< factorizations done before iterating
-  double iteration_seconds = 0;     ///< the rest of the solve
-  std::string message;              ///< why the solve failed or stopped short; empty if it converged
+  /// if not null, a solver that can tells it an estimate of the share of the solve done, in
+  /// `[0, 1]`, every few iterations; when it returns `false` the solver stops and fails
+  /// (`solve()` returns `false`, with `Norm_preserving_solve_report::interrupted` set)
+  const std::function<bool(double)>* progress = nullptr;
 };
 
 } // namespace Surface_mesh_parameterization

@@ -209,17 +209,17 @@ Parameterization_distortion measure_distortion(const std::vector<std::array<Vert
 /// \param vpmap `true` for the vertices that have a uv
 /// \param np optional `vertex_point_map` (default: the internal point map of `mesh`)
 template <typename TriangleMesh, typename VertexUVMap, typename VertexParameterizedMap,
-          typename NamedParameters = parameters::Default_named_parameters>
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Parameterization_distortion measure_distortion(const TriangleMesh& mesh, VertexUVMap uvmap,
                                                VertexParameterizedMap vpmap,
-                                               const NamedParameters& np = parameters::default_values())
+                                               const NamedParameters& np = CGAL::parameters::default_values())
 {
   namespace NP = internal::Norm_preserving;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const auto ppmap = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
+  const auto ppmap = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
   auto xyz = [&](auto v) -> NP::Vec3 {
     const auto& p = get(ppmap, v);
     return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};

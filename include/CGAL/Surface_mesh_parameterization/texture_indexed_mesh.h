@@ -47,34 +47,37 @@ struct Indexed_mesh_traits;
 /// vertices and faces held in a CGAL mesh (the same uvs, bit for bit): `texture_polygon_soup()`
 /// on the vertices and faces that `traits` reads, the uv of vertex `i` written as
 /// `put(uvmap, i, uv)`. Vertices on no face are left as they were; on failure nothing is
-/// written. The options' `fixed_pair`, if any, names vertex `i` as
-/// `Norm_preserving_triangle_mesh::Vertex_index(i)`.
+/// written.
 ///
 /// \tparam IndexedMesh the user's mesh type
 /// \tparam VertexUVMap a model of `WritablePropertyMap` from `std::size_t` to a 2D point type
+/// \tparam NamedParameters a sequence of named parameters
 /// \tparam Traits a model of `IndexedMeshTraits`; default `Indexed_mesh_traits<IndexedMesh>`
+/// \param mesh the mesh
+/// \param uvmap receives the uvs
+/// \param np the named parameters of `texture_polygon_soup()` (`fixed_pair` as vertex indices)
+///        but `point_map` and `geom_traits`: `traits` reads the points
+/// \param traits reads the mesh
 template <typename IndexedMesh, typename VertexUVMap,
-          typename InitialGuess = XY_min_max_initial_guess,
-          typename SolverTraits = Norm_preserving_ADMM_solver,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters,
           typename Traits = Indexed_mesh_traits<IndexedMesh> >
 Error_code texture_indexed_mesh(const IndexedMesh& mesh, VertexUVMap uvmap,
-                                const Texture_polygon_mesh_options<Norm_preserving_triangle_mesh, InitialGuess, SolverTraits>& options = {},
-                                Texture_polygon_mesh_report* report = nullptr,
+                                const NamedParameters& np = CGAL::parameters::default_values(),
                                 const Traits& traits = Traits())
 {
-  typedef Norm_preserving_triangle_mesh::Point Point_3;
-  std::vector<Point_3> points;
-  points.reserve(traits.number_of_vertices(mesh));
+  std::vector<std::array<double, 3> > positions;
+  positions.reserve(traits.number_of_vertices(mesh));
   for(std::size_t i = 0; i < traits.number_of_vertices(mesh); ++i)
   {
     const auto& p = traits.point(mesh, i);
-    points.emplace_back(double(p.x()), double(p.y()), double(p.z()));
+    positions.push_back({double(p.x()), double(p.y()), double(p.z())});
   }
   std::vector<std::vector<std::size_t> > polygons(traits.number_of_faces(mesh));
   for(std::size_t f = 0; f < polygons.size(); ++f)
     for(const auto& i : traits.face(mesh, f))
       polygons[f].push_back(std::size_t(i));
-  return texture_polygon_soup(points, polygons, uvmap, options, report);
+  return internal::Norm_preserving::texture_soup(std::move(positions), polygons, uvmap, np,
+                                                 [](const auto& i) { return std::size_t(i); });
 }
 
 } // namespace Surface_mesh_parameterization

@@ -8,20 +8,23 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_POLYGON_MESH_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_POLYGON_MESH_H
 
-#include <CGAL/Surface_mesh_parameterization/Norm_preserving_options.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_named_parameters.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Call_progress.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Component_layout.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Named_options.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Pipeline.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Soup_graph.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Texture_space_fit.h>
 
 #include <CGAL/Dynamic_property_map.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
+#include <boost/property_map/compose_property_map.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
@@ -36,36 +39,8 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgNormPreservingParameterizationTypes
-/// The mesh type whose vertex index names a soup vertex in the options of
-/// `texture_polygon_soup()` and `texture_indexed_mesh()`: vertex `i` is `Vertex_index(i)`.
-typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Norm_preserving_triangle_mesh;
-
-/// \ingroup PkgNormPreservingParameterizationTypes
-/// Options of `texture_polygon_mesh()` and, with `Norm_preserving_triangle_mesh` as
-/// `PolygonMesh`, of `texture_polygon_soup()` and `texture_indexed_mesh()`: the options shared
-/// with the parameterizer, plus the initial guess, the solver and a fixed pair.
-///
-/// CGAL 5.5's named parameters cannot be extended outside CGAL, so the options are a struct.
-/// \tparam PolygonMesh the input mesh type
-/// \tparam InitialGuess a model of `NormPreservingInitialGuess`
-/// \tparam SolverTraits a model of `NormPreservingSolver` or of `QuadraticProgramTraits`
-template <typename PolygonMesh,
-          typename InitialGuess = XY_min_max_initial_guess,
-          typename SolverTraits = Norm_preserving_ADMM_solver>
-struct Texture_polygon_mesh_options : Norm_preserving_options
-{
-  /// vertex handle of the input mesh
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-
-  InitialGuess initial_guess = InitialGuess(); ///< the initial guess used on every component
-  SolverTraits solver = SolverTraits();        ///< the QP solver (carries its tolerance)
-  /// the fixed pair of the component that contains it (adjacent vertices); every other
-  /// component, and all if empty, uses the automatic pair
-  std::optional<std::pair<vertex_descriptor, vertex_descriptor> > fixed_pair;
-};
-
-/// \ingroup PkgNormPreservingParameterizationTypes
-/// What `texture_polygon_mesh()` or `texture_polygon_soup()` did.
+/// What `texture_polygon_soup()`, `texture_polygon_mesh()` or `texture_indexed_mesh()` did
+/// (named parameter `report`).
 struct Texture_polygon_mesh_report
 {
   Error_code status = OK;                         ///< result of the call
@@ -80,21 +55,23 @@ struct Texture_polygon_mesh_report
   double optimality_gap = 0;
   std::vector<Norm_preserving_report> reports;    ///< one per component
   double seconds = 0;                             ///< wall-clock time of the call
+  bool interrupted = false;                       ///< whether the `progress` callback stopped the call
 };
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 namespace Norm_preserving {
 
-// texture_polygon_soup() with its fixed pair, if any, as soup indices.
-template <typename PointRange, typename PolygonRange, typename VertexUVMap, typename InitialGuess, typename SolverTraits>
-Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, VertexUVMap uvmap,
-                        const Norm_preserving_options& options, const InitialGuess& guess, const SolverTraits& solver,
-                        const std::pair<std::size_t, std::size_t>* requested_pair, Texture_polygon_mesh_report* report)
+// texture_polygon_soup() on the positions of the soup's vertices, with its fixed pair, if any,
+// as soup indices.
+template <typename PolygonRange, typename VertexUVMap, typename InitialGuess, typename SolverTraits>
+Error_code texture_soup(std::vector<std::array<double, 3> > positions, const PolygonRange& polygons, VertexUVMap uvmap,
+                        const Options& options, const InitialGuess& guess, const SolverTraits& solver,
+                        const std::optional<std::pair<std::size_t, std::size_t> >& requested_pair,
+                        Texture_polygon_mesh_report* report, const Progress_callback& callback)
 {
   typedef typename boost::property_traits<VertexUVMap>::value_type Point_2;
-  namespace NP = internal::Norm_preserving;
-  const std::size_t none = NP::Soup_graph::none;
+  const std::size_t none = Soup_graph::none, n = positions.size();
 
   const auto start = std::chrono::steady_clock::now();
   Texture_polygon_mesh_report local_report;
@@ -107,14 +84,14 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
     return status;
   };
   std::string message;
-  Error_code status = NP::check_polygon_soup(points, polygons, message);
+  Error_code status = check_polygon_soup(positions, polygons, message);
   if(status != OK)
     return finish(status, message);
-  message = NP::invalid_option(options);
+  message = invalid_option(options);
   if(!message.empty())
     return finish(ERROR_WRONG_PARAMETER, message);
 
-  const NP::Soup_graph graph = NP::build_soup_graph(points, polygons, options.weld_coincident_vertices);
+  const Soup_graph graph = build_soup_graph(std::move(positions), polygons, options.weld_coincident_vertices);
   r.components = graph.members.size();
   r.isolated_vertices = graph.unreferenced;
   r.welded_vertices = graph.welded;
@@ -126,7 +103,7 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
   if(requested_pair)
   {
     const std::size_t a = requested_pair->first, b = requested_pair->second;
-    if(a >= points.size() || b >= points.size())
+    if(a >= n || b >= n)
       return finish(ERROR_WRONG_PARAMETER, "a fixed vertex is not a vertex of the mesh");
     if(graph.representative[a] == none || graph.representative[b] == none)
       return finish(ERROR_WRONG_PARAMETER, "a fixed vertex lies on no face");
@@ -143,22 +120,26 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
   }
 
   // Every component in mesh units (NORM_PRESERVING_NO_FIT), then one layout and one fit for all.
-  std::vector<std::array<double, 2> > uv(points.size(), {0., 0.});
-  typedef typename NP::Solver_model<SolverTraits>::type Solver;
-  NP::Pipeline<InitialGuess, Solver> pipeline(guess, Solver(solver));
+  std::vector<std::array<double, 2> > uv(n, {0., 0.});
+  typedef typename Solver_model<SolverTraits>::type Solver;
+  Pipeline<InitialGuess, Solver> pipeline(guess, Solver(solver));
   pipeline.options() = options;
   pipeline.options().texture_fit = NORM_PRESERVING_NO_FIT; // the fit and the tiling come after the layout
   pipeline.options().tiles_u = pipeline.options().tiles_v = 1;
-  const std::vector<std::vector<std::size_t> > edges_of = NP::edges_by_component(graph);
-  std::vector<std::size_t> local(points.size(), none); // each component writes its own members
+  const std::vector<std::vector<std::size_t> > edges_of = edges_by_component(graph);
+  std::vector<std::size_t> local(n, none); // each component writes its own members
   std::vector<UV_vector> component_uv(r.components);
   std::vector<unsigned char> is_point(r.components, 0); // of zero extent
   r.reports.resize(r.components);
+  Call_progress progress(callback, graph.members, start);
   // The components are independent: on a TBB build they run at once, each as it would alone,
   // so the bits do not depend on the number of threads (doc/decisions.md, the QP's solver).
-  NP::parallel_for_each_task(r.components, [&](std::size_t c) {
+  parallel_for_each_task(r.components, [&](std::size_t c) {
     const auto component_start = std::chrono::steady_clock::now();
-    Norm_preserving_geometry geometry = NP::component_geometry(graph, c, edges_of, local);
+    if(!progress.update(c, 0))
+      return;
+    const std::function<bool(double)> solve_progress = [&progress, c](double f) { return progress.update(c, f); };
+    Norm_preserving_geometry geometry = component_geometry(graph, c, edges_of, local);
     Norm_preserving_report& component_report = r.reports[c];
     std::optional<std::pair<std::size_t, std::size_t> > pair;
     if(c == pair_component)
@@ -167,21 +148,28 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
       return geometry.points[e[0]] != geometry.points[e[1]];
     });
     if(has_extent)
-      component_report.status = pipeline.run(std::move(geometry), pair, component_uv[c], component_report);
+      component_report.status = pipeline.run(std::move(geometry), pair, component_uv[c], component_report,
+                                             progress.active() ? &solve_progress : nullptr);
     else
     {
       // Every vertex at one position: the optimum of Eq. 5 is a point.
       component_report.vertices = geometry.points.size();
       component_report.edges = geometry.edges.size();
-      component_report.solver_status = NORM_PRESERVING_SOLVER_CONVERGED;
-      component_report.optimality_gap = 0;
+      component_report.solver.status = NORM_PRESERVING_SOLVER_CONVERGED;
+      component_report.solver.optimality_gap = 0;
       component_uv[c].assign(geometry.points.size(), {0., 0.});
       is_point[c] = 1;
       component_report.status = pair && pair->first != pair->second ? ERROR_WRONG_PARAMETER : OK;
       component_report.message = component_report.status == OK ? "" : "the fixed vertices are at the same position";
     }
     component_report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - component_start).count();
+    progress.finish(c);
   });
+  if(progress.stopped())
+  {
+    r.interrupted = true;
+    return finish(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "interrupted by the progress callback");
+  }
 
   // In component order: the first failure is the call's, whatever ran first.
   for(std::size_t c = 0; c < r.components; ++c)
@@ -193,29 +181,46 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
     component_report.fixed_b = graph.members[c][component_report.fixed_b];
     r.point_components += is_point[c];
     r.objective += component_report.objective;
-    r.optimality_gap = (std::max)(r.optimality_gap, component_report.optimality_gap);
+    r.optimality_gap = (std::max)(r.optimality_gap, component_report.solver.optimality_gap);
     for(std::size_t k = 0; k < component_uv[c].size(); ++k)
       uv[graph.members[c][k]] = component_uv[c][k];
   }
   if(r.point_components == r.components)
     return finish(ERROR_WRONG_PARAMETER, "the mesh has zero extent: the vertices of each component are at one position");
 
-  NP::lay_out_components(uv, graph.component, r.components);
+  lay_out_components(uv, graph.component, r.components);
   std::vector<std::array<double, 2> > on_faces;
-  for(std::size_t i = 0; i < points.size(); ++i)
+  for(std::size_t i = 0; i < n; ++i)
     if(graph.component[i] != none) on_faces.push_back(uv[i]);
-  NP::fit_to_texture_space(on_faces, options.texture_fit, options.tiles_u, options.tiles_v);
+  fit_to_texture_space(on_faces, options.texture_fit, options.tiles_u, options.tiles_v);
   std::size_t k = 0;
-  for(std::size_t i = 0; i < points.size(); ++i)
+  for(std::size_t i = 0; i < n; ++i)
     if(graph.component[i] != none)
       uv[i] = on_faces[k++];
-  for(std::size_t i = 0; i < points.size(); ++i)
+  for(std::size_t i = 0; i < n; ++i)
     if(graph.representative[i] != none)
     {
       const std::array<double, 2>& p = uv[graph.representative[i]];
       put(uvmap, i, Point_2(p[0], p[1]));
     }
   return finish(OK, std::string());
+}
+
+// The coordinates of `p` as doubles, through the traits' constructions.
+template <typename Traits, typename Point>
+std::array<double, 3> coordinates(const Traits& traits, const Point& p)
+{
+  return {CGAL::to_double(traits.compute_x_3_object()(p)), CGAL::to_double(traits.compute_y_3_object()(p)),
+          CGAL::to_double(traits.compute_z_3_object()(p))};
+}
+
+// texture_soup() with what the named parameters say.
+template <typename PolygonRange, typename VertexUVMap, typename NamedParameters, typename Index>
+Error_code texture_soup(std::vector<std::array<double, 3> > positions, const PolygonRange& polygons, VertexUVMap uvmap,
+                        const NamedParameters& np, const Index& index)
+{
+  return texture_soup(std::move(positions), polygons, uvmap, named_options(np), named_guess(np), named_solver(np),
+                      named_fixed_pair(np, index), named_report<Texture_polygon_mesh_report>(np), named_progress(np));
 }
 
 } // namespace Norm_preserving
@@ -230,7 +235,7 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
 /// The edge graph is built from the faces, each triangulated on its own (adding no vertex); a
 /// face that passes through a vertex more than once is split there (a repeat in a row is
 /// dropped), and a face left with two distinct vertices adds its edge. Vertices at exactly the
-/// same position are welded into one (unless `options.weld_coincident_vertices` is `false`).
+/// same position are welded into one (unless `weld_coincident_vertices(false)`).
 /// Each connected component of the graph is parameterized with `Norm_preserving_parameterizer_3`'s
 /// method at one common scale (mesh units, so texel density is uniform), several at once on a
 /// TBB build (with the same result as on one thread); a component of zero extent is mapped to
@@ -238,34 +243,42 @@ Error_code texture_soup(const PointRange& points, const PolygonRange& polygons, 
 /// fitted into texture space and tiled, and the uv of every vertex on a face is written into
 /// `uvmap` (a welded vertex gets the uv of its weld). Vertices on no face are left as they were.
 ///
-/// On failure nothing is written, `report->message` says why, and the code is:
+/// On failure nothing is written, the report's `message` says why, and the code is:
 /// - `ERROR_EMPTY_MESH`: no face;
 /// - `ERROR_WRONG_PARAMETER`: a face that refers to a missing vertex, a non-finite coordinate
-///   of a vertex on a face, all vertices at one position, a fixed pair on no face, in two
-///   components, welded into one vertex or not an edge;
+///   of a vertex on a face, all vertices at one position, an option out of range, a fixed pair
+///   on no face, in two components, welded into one vertex or not an edge;
 /// - or the error of a component, as `Norm_preserving_parameterizer_3::parameterize()` says.
 ///
-/// \tparam PointRange a random-access range of 3D points (`x()`, `y()`, `z()`)
+/// \tparam PointRange a range of points (or of anything `point_map` maps to points)
 /// \tparam PolygonRange a random-access range of ranges of integer indices
 /// \tparam VertexUVMap a model of `WritablePropertyMap` from `std::size_t` to a 2D point type
+/// \tparam NamedParameters a sequence of named parameters
 /// \param points the vertex positions
 /// \param polygons the faces, as vertex indices in order around each
 /// \param uvmap receives the uv of vertex `i` as `put(uvmap, i, uv)`
-/// \param options its `fixed_pair`, if any, names soup vertex `i` as
-///        `Norm_preserving_triangle_mesh::Vertex_index(i)`
-/// \param report if not null, receives what the call did
+/// \param np the named parameters of `CGAL::Surface_mesh_parameterization::parameters`, all
+///        optional: `initial_guess`, `solver` or `quality`, `texture_fit`, `tiling`,
+///        `fixed_pair` (two vertex indices), `sign_refinement`, `euclidean_refinement`,
+///        `weld_coincident_vertices`, `report`, `progress`; and CGAL's `point_map` (default the identity)
+///        and `geom_traits` (default the kernel of the point type), whose `Compute_x_3`,
+///        `Compute_y_3` and `Compute_z_3` read the coordinates
 template <typename PointRange, typename PolygonRange, typename VertexUVMap,
-          typename InitialGuess = XY_min_max_initial_guess,
-          typename SolverTraits = Norm_preserving_ADMM_solver>
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& polygons, VertexUVMap uvmap,
-                                const Texture_polygon_mesh_options<Norm_preserving_triangle_mesh, InitialGuess, SolverTraits>& options = {},
-                                Texture_polygon_mesh_report* report = nullptr)
+                                const NamedParameters& np = CGAL::parameters::default_values())
 {
-  std::pair<std::size_t, std::size_t> pair;
-  if(options.fixed_pair)
-    pair = {std::size_t(options.fixed_pair->first), std::size_t(options.fixed_pair->second)};
-  return internal::Norm_preserving::texture_soup(points, polygons, uvmap, options, options.initial_guess, options.solver,
-                                                 options.fixed_pair ? &pair : nullptr, report);
+  namespace P = CGAL::parameters;
+  typedef typename GetPointMap<PointRange, NamedParameters>::const_type Point_map;
+  const Point_map point_map = P::choose_parameter<Point_map>(P::get_parameter(np, CGAL::internal_np::point_map));
+  typedef typename CGAL::Kernel_traits<typename boost::property_traits<Point_map>::value_type>::Kernel Default_traits;
+  typedef internal::Norm_preserving::Named_type<CGAL::internal_np::geom_traits_t, NamedParameters, Default_traits> Traits;
+  const Traits traits = P::choose_parameter<Traits>(P::get_parameter(np, CGAL::internal_np::geom_traits));
+  std::vector<std::array<double, 3> > positions;
+  for(const auto& element : points)
+    positions.push_back(internal::Norm_preserving::coordinates(traits, get(point_map, element)));
+  return internal::Norm_preserving::texture_soup(std::move(positions), polygons, uvmap, np,
+                                                 [](const auto& i) { return std::size_t(i); });
 }
 
 /// \ingroup PkgNormPreservingParameterizationFunctions
@@ -274,28 +287,34 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
 /// `uvmap`. Vertices on no face are left as they were. Fails as `texture_polygon_soup()`
 /// does, writing nothing.
 ///
-/// \tparam PolygonMesh a model of `FaceListGraph` with an internal `vertex_point` map
+/// \tparam PolygonMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `WritablePropertyMap` from vertices to a 2D point type
+/// \tparam NamedParameters a sequence of named parameters
+/// \param mesh the mesh
+/// \param uvmap receives the uvs
+/// \param np the named parameters of `texture_polygon_soup()`, with `fixed_pair` given as two
+///        vertex descriptors, and CGAL's `vertex_point_map` (default the mesh's internal map)
+///        in place of `point_map`; `geom_traits` defaults to the kernel of its points
 template <typename PolygonMesh, typename VertexUVMap,
-          typename InitialGuess = XY_min_max_initial_guess,
-          typename SolverTraits = Norm_preserving_ADMM_solver>
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
-                                const Texture_polygon_mesh_options<PolygonMesh, InitialGuess, SolverTraits>& options = {},
-                                Texture_polygon_mesh_report* report = nullptr)
+                                const NamedParameters& np = CGAL::parameters::default_values())
 {
-  typedef Norm_preserving_triangle_mesh TM;
+  namespace P = CGAL::parameters;
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  const auto vpm = P::choose_parameter(P::get_parameter(np, CGAL::internal_np::vertex_point),
+                                       get_const_property_map(CGAL::vertex_point, mesh));
+  typedef typename GetGeomTraits<PolygonMesh, NamedParameters>::type Traits;
+  const Traits traits = P::choose_parameter<Traits>(P::get_parameter(np, CGAL::internal_np::geom_traits));
 
   // The soup in the input's vertex order, so that indices do not depend on the mesh type.
-  std::vector<TM::Point> points;
+  std::vector<std::array<double, 3> > positions;
   std::vector<vertex_descriptor> original;
   auto index_of = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
-  const auto ppmap = get(CGAL::vertex_point, mesh);
   for(vertex_descriptor v : vertices(mesh))
   {
-    const auto& p = get(ppmap, v);
-    put(index_of, v, points.size());
-    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    put(index_of, v, positions.size());
+    positions.push_back(internal::Norm_preserving::coordinates(traits, get(vpm, v)));
     original.push_back(v);
   }
   std::vector<std::vector<std::size_t> > polygons;
@@ -305,14 +324,9 @@ Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
     for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
       polygons.back().push_back(get(index_of, v));
   }
-
-  std::pair<std::size_t, std::size_t> pair;
-  if(options.fixed_pair)
-    pair = {get(index_of, options.fixed_pair->first), get(index_of, options.fixed_pair->second)};
-  return internal::Norm_preserving::texture_soup(points, polygons,
-                                                 CGAL::bind_property_maps(CGAL::make_property_map(original), uvmap),
-                                                 options, options.initial_guess, options.solver,
-                                                 options.fixed_pair ? &pair : nullptr, report);
+  return internal::Norm_preserving::texture_soup(std::move(positions), polygons,
+                                                 boost::make_compose_property_map(uvmap, CGAL::make_property_map(original)),
+                                                 np, [&](vertex_descriptor v) { return get(index_of, v); });
 }
 
 } // namespace Surface_mesh_parameterization

@@ -24,7 +24,10 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ACTIVE_SET_POLISH_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ACTIVE_SET_POLISH_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Admm_settings.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Free_vertex_laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Index_sets.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Normal_equations.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
 
@@ -49,15 +52,11 @@ namespace Norm_preserving {
 
 using Active_set = std::vector<std::array<char, 2> >; // per edge and coordinate: at equality
 
-// A round whose clusters differ from those of the last factorization by at most this many
-// splits and joins is solved on it, bordered (doc/performance.md, changes 17, 18 and 20).
-constexpr std::size_t polish_border = 64;
-
 // The vertices in the order the factor of the free-vertex Laplacian eliminates them
 // (`positions`, per free index), the fixed ones last. The polish numbers its unknowns in this
 // order: every edge couples the u and v of both its ends, so the Laplacian's fill-reducing
 // order, each vertex's two unknowns side by side, suits its normal equations too, and they
-// are factored without an ordering of their own in each round (doc/performance.md, change 13).
+// are factored without an ordering of their own in each round.
 inline std::vector<std::size_t> elimination_order(const std::vector<int>& free_index, const std::vector<int>& positions)
 {
   std::vector<std::size_t> order(free_index.size());
@@ -68,10 +67,9 @@ inline std::vector<std::size_t> elimination_order(const std::vector<int>& free_i
 }
 
 // The factorization of the polish's regularized normal equations, its unknowns already in a
-// fill-reducing order: Eigen's simplicial L D L', or from 25,000 unknowns CHOLMOD's supernodal
-// L L' when the package is configured with it (faster there; below, faster on some meshes and
-// slower on others: doc/performance.md, changes 7 and 13), read in place by the border
-// (change 20).
+// fill-reducing order: Eigen's simplicial L D L', or from `cholmod_minimum_rows` unknowns
+// CHOLMOD's supernodal L L' when the package is configured with it (doc/performance.md,
+// "Sparse Cholesky"); the border reads either factor in place.
 class Regularized_normal_cholesky
 {
 public:
@@ -79,7 +77,7 @@ public:
   bool compute(const Sparse_matrix& lower)
   {
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-    m_large = std::size_t(lower.rows()) >= cholmod_minimum_rows;
+    m_large = std::size_t(lower.rows()) >= Cholesky_settings::cholmod_minimum_rows;
     if(m_large)
       return m_cholmod.compute(lower);
 #endif
@@ -94,7 +92,7 @@ public:
   {
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
     if(m_large)
-      return m_cholmod.solve(b);
+      return m_cholmod.solve_system(CHOLMOD_A, b);
 #endif
     return m_ldlt.solve(b);
   }
@@ -103,7 +101,7 @@ public:
   // of [K U; U' X]: complement() = U' K^-1 U; per right-hand side b0, project(b0) = U' K^-1 b0,
   // then solve(t) = K^-1 (b0 - U t), one solve of K in all. The columns are kept as L^-1 U on
   // the rows it reaches (the ancestors of U's rows in the elimination tree), all at once, on
-  // either factor (doc/performance.md, changes 18 and 20).
+  // either factor.
   class Border
   {
   public:
@@ -255,17 +253,22 @@ private:
   // super[s + 1] - 1, each with the rows s[pi[s]] to s[pi[s + 1] - 1] (ascending, the
   // supernode's own first: padding zeros included, the first row below the diagonal is the
   // parent), its values by columns from x[px[s]].
-  class Supernodal : public Sparse_cholesky
+  class Supernodal
   {
   public:
     bool compute(const Sparse_matrix& lower)
     {
-      cholmod_common& common = cholmod();
+      cholmod_common& common = m_factor.common;
       common.print = 0;
       common.nmethods = 1;
       common.method[0].ordering = CHOLMOD_NATURAL; // postordered
-      Sparse_cholesky::compute(lower);
-      if(info() != Eigen::Success || !factor().is_super)
+      common.final_asis = 1;
+      common.supernodal = CHOLMOD_SUPERNODAL;
+      cholmod_free_factor(&m_factor.factor, &common);
+      cholmod_sparse view = cholmod_lower_view(lower);
+      m_factor.factor = cholmod_analyze(&view, &common);
+      if(m_factor.factor == nullptr || !cholmod_factorize(&view, m_factor.factor, &common) ||
+         common.status != CHOLMOD_OK || m_factor.factor->minor != m_factor.factor->n || !factor().is_super)
         return false;
       const int* super = static_cast<const int*>(factor().super);
       m_supernode.resize(factor().n);
@@ -278,7 +281,7 @@ private:
       return true;
     }
 
-    const cholmod_factor& factor() const { return *this->m_cholmodFactor; }
+    const cholmod_factor& factor() const { return *m_factor.factor; }
 
     Eigen::Index position(Eigen::Index unknown) const { return m_position[std::size_t(unknown)]; }
 
@@ -297,16 +300,16 @@ private:
         below(Eigen::Index(c.rows[r]), c.values[r]);
     }
 
-    // Solves the system of CHOLMOD's code (CHOLMOD_L, CHOLMOD_P, ...) for b; NaN if it fails.
+    // Solves the system of CHOLMOD's code (CHOLMOD_A, CHOLMOD_L, CHOLMOD_P, ...) for b; NaN if
+    // it fails.
     Eigen::VectorXd solve_system(int system, Eigen::VectorXd b) const
     {
-      cholmod_common* common = &const_cast<Supernodal&>(*this).cholmod(); // Eigen's is mutable
-      cholmod_dense view = Eigen::viewAsCholmod(b);
-      cholmod_dense* x = cholmod_solve(system, this->m_cholmodFactor, &view, common);
+      cholmod_dense view = cholmod_column_view(b.data(), std::size_t(b.size()));
+      cholmod_dense* x = cholmod_solve(system, m_factor.factor, &view, &m_factor.common);
       if(x == nullptr)
         return Eigen::VectorXd::Constant(b.size(), std::numeric_limits<double>::quiet_NaN());
       b = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(x->x), b.size());
-      cholmod_free_dense(&x, common);
+      cholmod_free_dense(&x, &m_factor.common);
       return b;
     }
 
@@ -329,6 +332,7 @@ private:
               height};
     }
 
+    mutable Cholmod_factor m_factor; // CHOLMOD's solves write into its workspace
     std::vector<int> m_supernode, m_position; // per column its supernode; per unknown its row of L
   };
 
@@ -344,26 +348,23 @@ typedef std::array<std::vector<std::size_t>, 2> Active_set_clusters;
 
 inline Active_set_clusters active_set_clusters(const Norm_preserving_geometry& geometry, const Active_set& active)
 {
-  const std::size_t n = geometry.points.size();
+  const std::size_t n = geometry.points.size(), none = std::size_t(-1);
   Active_set_clusters cluster;
   for(int c = 0; c < 2; ++c)
   {
-    std::vector<std::size_t>& parent = cluster[c];
-    parent.resize(n);
-    std::iota(parent.begin(), parent.end(), std::size_t(0));
-    auto find = [&](std::size_t i) {
-      while(parent[i] != i)
-        i = parent[i] = parent[parent[i]];
-      return i;
-    };
+    Index_sets tied(n);
     for(std::size_t e = 0; e < geometry.edges.size(); ++e)
       if(active[e][c])
-      {
-        const std::size_t a = find(geometry.edges[e][0]), b = find(geometry.edges[e][1]);
-        parent[(std::max)(a, b)] = (std::min)(a, b);
-      }
+        tied.join(geometry.edges[e][0], geometry.edges[e][1]);
+    std::vector<std::size_t> lowest(n, none); // of each set, by its representative
+    cluster[c].resize(n);
     for(std::size_t i = 0; i < n; ++i)
-      parent[i] = find(i);
+    {
+      std::size_t& first = lowest[tied.find(i)];
+      if(first == none)
+        first = i;
+      cluster[c][i] = first;
+    }
   }
   return cluster;
 }
@@ -406,7 +407,7 @@ inline bool active_set_system(const Norm_preserving_geometry& geometry, const st
   }
   // The unknowns follow `order`, each vertex's u then v; a cluster takes the place of its
   // member eliminated last: it couples the neighbours of all its members, and eliminated at
-  // its first member it would fill the factor (3-9 times the fill on the benchmark meshes).
+  // its first member it would fill the factor several times over.
   int unknowns = 0;
   for(int c = 0; c < 2; ++c)
     for(std::size_t i = 0; i < n; ++i)
@@ -417,51 +418,31 @@ inline bool active_set_system(const Norm_preserving_geometry& geometry, const st
       if(unknown[c][cluster[c][order[k]]] == -2)
         unknown[c][cluster[c][order[k]]] = --next;
 
-  // Normal equations of sum_e (d_e - C_e x)^2 in the clusters' unknowns.
-  std::vector<Eigen::Triplet<double> > triplets;
-  triplets.reserve(10 * m);
-  Eigen::VectorXd& rhs = system.rhs;
-  rhs = Eigen::VectorXd::Zero(unknowns);
-  for(std::size_t e = 0; e < m; ++e)
-  {
-    std::array<int, 4> index;
-    std::array<double, 4> coefficient;
-    int count = 0;
-    double d = lengths[e];
-    for(int c = 0; c < 2; ++c)
-      for(int end = 0; end < 2; ++end)
-      {
-        const std::size_t r = cluster[c][geometry.edges[e][std::size_t(end)]];
-        const double a = end == 0 ? signs[e][c] : -signs[e][c];
-        if(unknown[c][r] < 0)
-          d -= a * value[c][r];
-        else
-        {
-          index[std::size_t(count)] = unknown[c][r];
-          coefficient[std::size_t(count++)] = a;
-        }
-      }
-    for(int s = 0; s < count; ++s)
-    {
-      rhs[index[std::size_t(s)]] += coefficient[std::size_t(s)] * d;
-      for(int t = 0; t < count; ++t)
-        if(index[std::size_t(s)] >= index[std::size_t(t)]) // the lower triangle; a cluster's two ends cancel
-          triplets.emplace_back(index[std::size_t(s)], index[std::size_t(t)],
-                                coefficient[std::size_t(s)] * coefficient[std::size_t(t)]);
-    }
-  }
-  // The optimum is not unique where a vertex can slide along a diagonal without changing any
-  // L1 length: the system is singular there. Proximal steps from the start point (the ADMM's),
+  // Normal equations of sum_e (d_e - C_e x)^2 in the clusters' unknowns. The optimum is not
+  // unique where a vertex can slide along a diagonal without changing any L1 length: the system
+  // is singular there. Proximal steps from the start point (the ADMM's),
   // x <- (H + eps I)^-1 (b + eps x), converge to the optimum nearest to it.
+  Normal_equations normal = normal_equations(m, std::size_t(unknowns), [&](std::size_t e, const auto& term) {
+    return sign_constrained_row(geometry, lengths, signs, e,
+                                [&](int c, std::size_t i, const auto& unknown_term, const auto& known) {
+                                  const std::size_t r = cluster[c][i];
+                                  if(unknown[c][r] < 0)
+                                    known(value[c][r]);
+                                  else
+                                    unknown_term(unknown[c][r]);
+                                },
+                                term);
+  });
+  const int* start = normal.lower.outerIndexPtr();
+  double* diagonal = normal.lower.valuePtr();
   double diagonal_sum = 0;
-  for(const auto& t : triplets)
-    if(t.row() == t.col())
-      diagonal_sum += t.value();
+  for(int k = 0; k < unknowns; ++k)
+    diagonal_sum += diagonal[start[k]];
   system.eps = 1e-9 * diagonal_sum / (std::max)(1, unknowns);
   for(int k = 0; k < unknowns; ++k)
-    triplets.emplace_back(k, k, system.eps);
-  system.normal.resize(unknowns, unknowns);
-  system.normal.setFromTriplets(triplets.begin(), triplets.end());
+    diagonal[start[k]] += system.eps;
+  system.normal = std::move(normal.lower);
+  system.rhs = std::move(normal.rhs);
   return true;
 }
 
@@ -499,22 +480,20 @@ inline bool factor_active_set(const Norm_preserving_geometry& geometry, const st
 }
 
 // Proximal steps x <- argmin |d - C x|^2 + eps |x - x_prev|^2 from `x`: at most four, fewer
-// once a step moves x by at most `proximal_round_off` of its size. With eps 1e-9 of the mean
-// diagonal a solve's round-off is about 1e-7 of x: on the benchmark meshes every step after
-// the first moved x by about that much, along directions of zero curvature, without
-// converging, so the steps end after the second (doc/performance.md, change 19). `step` takes
-// x_prev and returns the next x. False if a step is not finite.
-constexpr double proximal_round_off = 1e-5;
-
+// once a step moves x by at most `round_off` of its size (Admm_settings::
+// polish_proximal_round_off): with eps 1e-9 of the mean diagonal a solve's round-off is about
+// 1e-7 of x, and the steps after the first move x by about that much along directions of zero
+// curvature without converging. `step` takes x_prev and returns the next x. False if a step is
+// not finite.
 template <typename Step>
-bool proximal_steps(const Step& step, Eigen::VectorXd& x)
+bool proximal_steps(const Step& step, double round_off, Eigen::VectorXd& x)
 {
   for(int k = 0; k < 4; ++k)
   {
     const Eigen::VectorXd next = step(x);
     if(!next.allFinite())
       return false;
-    const bool still = (next - x).lpNorm<Eigen::Infinity>() <= proximal_round_off * (1. + x.lpNorm<Eigen::Infinity>());
+    const bool still = (next - x).lpNorm<Eigen::Infinity>() <= round_off * (1. + x.lpNorm<Eigen::Infinity>());
     x = next;
     if(still)
       break;
@@ -523,7 +502,8 @@ bool proximal_steps(const Step& step, Eigen::VectorXd& x)
 }
 
 // The solution on the factored system's own clusters nearest to `start`, written to `uv`.
-inline bool solve_factored(const Active_set_factorization& factored, const UV_vector& start, UV_vector& uv)
+inline bool solve_factored(const Active_set_factorization& factored, const UV_vector& start, double round_off,
+                           UV_vector& uv)
 {
   const std::size_t n = start.size();
   const Active_set_clusters& cluster = factored.clusters;
@@ -538,7 +518,8 @@ inline bool solve_factored(const Active_set_factorization& factored, const UV_ve
         members[system.unknown[c][cluster[c][i]]] += 1;
       }
   x = x.cwiseQuotient(members);
-  if(!proximal_steps([&](const Eigen::VectorXd& at) { return factored.cholesky.solve(system.rhs + system.eps * at); }, x))
+  if(!proximal_steps([&](const Eigen::VectorXd& at) { return factored.cholesky.solve(system.rhs + system.eps * at); },
+                     round_off, x))
     return false;
   uv.resize(n);
   for(int c = 0; c < 2; ++c)
@@ -557,11 +538,11 @@ inline bool solve_factored(const Active_set_factorization& factored, const UV_ve
 // cluster are tied by equality constraints (to its fixed value, if it has one). The border,
 // offsets and constraints, is solved by its Schur complement (Regularized_normal_cholesky::
 // Border). False if the border would have more than `max_border` columns, or a solve is not
-// finite (doc/performance.md, changes 17 and 18).
+// finite.
 inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                            const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
                            const Active_set_factorization& factored, const Active_set_clusters& clusters,
-                           const UV_vector& start, std::size_t max_border, UV_vector& uv)
+                           const UV_vector& start, std::size_t max_border, double round_off, UV_vector& uv)
 {
   const std::size_t n = geometry.points.size(), m = geometry.edges.size();
   const Active_set_clusters& base = factored.clusters;
@@ -628,25 +609,20 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
     std::array<Eigen::Index, 8> index;
     std::array<double, 8> coefficient;
     int count = 0;
-    double d = lengths[e];
-    for(int c = 0; c < 2; ++c)
-      for(int end = 0; end < 2; ++end)
-      {
-        const std::size_t i = ends[std::size_t(end)], b = base[c][i];
-        const double a = end == 0 ? signs[e][c] : -signs[e][c];
+    const double d = sign_constrained_row(geometry, lengths, signs, e,
+      [&](int c, std::size_t i, const auto& unknown, const auto& known) { // the piece's base unknown and offset
+        const std::size_t b = base[c][i];
         if(column_of(c, b) < 0)
-          d -= a * system.value[c][b];
+          known(system.value[c][b]);
         else
-        {
-          index[std::size_t(count)] = column_of(c, b);
-          coefficient[std::size_t(count++)] = a;
-        }
+          unknown(column_of(c, b));
         if(offset_of[c][i] >= 0)
-        {
-          index[std::size_t(count)] = offset_of[c][i];
-          coefficient[std::size_t(count++)] = a;
-        }
-      }
+          unknown(offset_of[c][i]);
+      },
+      [&](Eigen::Index k, double a) {
+        index[std::size_t(count)] = k;
+        coefficient[std::size_t(count++)] = a;
+      });
     for(int s = 0; s < count; ++s)
     {
       const Eigen::Index row = index[std::size_t(s)] - unknowns;
@@ -721,7 +697,7 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
     x[k] /= members[k];
   // Each step solves for its change from the residual of the whole bordered system, whose sparse
   // parts give it to round-off: the complement's own round-off (it grows as 1/eps) then slows
-  // the steps instead of biasing where they end (doc/performance.md, change 21).
+  // the steps instead of biasing where they end.
   Eigen::VectorXd multipliers = Eigen::VectorXd::Zero(p - offsets); // the ties'
   const bool solved = proximal_steps(
     [&](const Eigen::VectorXd& at) {
@@ -740,7 +716,7 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
       multipliers += change.tail(p - offsets);
       return next;
     },
-    x);
+    round_off, x);
   if(!solved)
     return false;
   // Every vertex takes the value of its new cluster's root (or the cluster's fixed value).
@@ -763,14 +739,14 @@ inline bool solve_bordered(const Norm_preserving_geometry& geometry, const std::
 // (or nothing) and receives this round's: when the active set ties the clusters of the round
 // before (the constraints that left it were on cycles of active edges, those that joined it
 // tied vertices already tied), `start` is the solution on `active` too, and nothing is solved
-// (doc/performance.md, change 16); when its clusters differ from those of the last
-// factorization in at most `polish_border` splits and joins, they are solved bordered on it
-// (changes 17, 18 and 20); else factored anew. `order` as for active_set_system().
+// (performance.md, "Active-set polish"); when its clusters differ from those of the last
+// factorization in at most `settings.polish_border` splits and joins, they are solved bordered
+// on it; else factored anew. `order` as for active_set_system().
 inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                                 const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
                                 const std::vector<std::size_t>& order, const Active_set& active, const UV_vector& start,
                                 Active_set_rounds& rounds, const std::vector<std::array<double, 2> >& estimate,
-                                UV_vector& uv, std::vector<std::array<double, 2> >& y)
+                                const Admm_settings& settings, UV_vector& uv, std::vector<std::array<double, 2> >& y)
 {
   const std::size_t n = geometry.points.size(), m = geometry.edges.size();
   Active_set_clusters tied = active_set_clusters(geometry, active);
@@ -781,9 +757,9 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
     rounds.clusters.swap(tied);
     const bool bordered = !rounds.factored.clusters[0].empty() &&
                           solve_bordered(geometry, lengths, signs, fixed, rounds.factored, rounds.clusters, start,
-                                         polish_border, uv);
+                                         settings.polish_border, settings.polish_proximal_round_off, uv);
     if(!bordered && !(factor_active_set(geometry, lengths, signs, fixed, order, rounds.clusters, rounds.factored) &&
-                      solve_factored(rounds.factored, start, uv)))
+                      solve_factored(rounds.factored, start, settings.polish_proximal_round_off, uv)))
       return false;
   }
 
@@ -853,6 +829,56 @@ inline bool solve_on_active_set(const Norm_preserving_geometry& geometry, const 
   }
   return true;
 }
+
+// The corrections of a polish try's active set from one round to the next: violated constraints
+// join it, those of negative multiplier leave it, both beyond round-off (degenerate constraints,
+// of zero value and multiplier at the optimum, would turn back and forth every round). Once the
+// corrections stop shrinking, only the most wrong turn, fewer each round; a try whose
+// corrections grow is abandoned (performance.md, "Active-set polish").
+class Active_set_corrections
+{
+public:
+  // Corrects `active` after round `round` of a try, whose solution is `candidate` with
+  // multipliers `y`. False if the try ends: at a KKT point (nothing to turn: at_kkt_point()),
+  // or on corrections that grow.
+  bool correct(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths, const Edge_signs& signs,
+               const UV_vector& candidate, const std::vector<std::array<double, 2> >& y, const Admm_settings& settings,
+               int round, Active_set& active)
+  {
+    m_wrong.clear();
+    for(std::size_t e = 0; e < geometry.edges.size(); ++e)
+    {
+      const double r = sign_constrained_residual(geometry, lengths, signs, candidate, e);
+      for(int c = 0; c < 2; ++c)
+      {
+        const double amount = active[e][c] ? 2. * r + y[e][c] : -sign_constraint_value(geometry, signs, candidate, e, c);
+        if(amount > settings.polish_turn_tolerance)
+          m_wrong.emplace_back(-amount, 2 * e + std::size_t(c));
+      }
+    }
+    m_fewest = (std::min)(m_fewest, m_wrong.size());
+    if(m_wrong.empty() || m_wrong.size() > settings.polish_growth_limit * m_fewest + settings.polish_growth_slack)
+      return false;
+    if(round > 0 && double(m_wrong.size()) > settings.polish_shrink * double(m_wanted))
+      m_limit = (std::max)(std::size_t(1), (std::min)(m_limit, m_wanted / 2));
+    m_wanted = m_wrong.size();
+    if(m_wanted > m_limit)
+    {
+      std::sort(m_wrong.begin(), m_wrong.end()); // the most wrong first, then by index
+      m_wrong.resize(m_limit);
+    }
+    for(const auto& turn : m_wrong)
+      active[turn.second / 2][turn.second % 2] ^= 1;
+    return true;
+  }
+
+  bool at_kkt_point() const { return m_wrong.empty(); }
+
+private:
+  std::vector<std::pair<double, std::size_t> > m_wrong; // (minus how wrong, 2 e + c)
+  std::size_t m_wanted = 0;                                // turns the last round wanted
+  std::size_t m_fewest = std::numeric_limits<std::size_t>::max(), m_limit = std::numeric_limits<std::size_t>::max();
+};
 
 } // namespace Norm_preserving
 } // namespace internal

@@ -13,6 +13,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FREE_VERTEX_LAPLACIAN_H
 
 #include <CGAL/assertions.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Normal_equations.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sparse_cholesky.h>
@@ -40,44 +41,17 @@ inline std::vector<int> free_vertex_indices(std::size_t n, const std::array<Fixe
 }
 
 // Lower triangle of the unit-weight graph Laplacian among the free vertices (`free_index` of
-// free_vertex_indices(): increasing), written in compressed form: the edges, sorted, give each
-// column's rows in order (with setFromTriplets() the assembly took 3 times as long, most of it
-// in the triplets' fresh pages and the two copies: doc/performance.md, change 31).
+// free_vertex_indices()): the normal matrix of the mesh step's least squares, whose rows are the
+// edges' differences w_i - w_j with the fixed ends' values known.
 inline Sparse_matrix free_vertex_laplacian(const Norm_preserving_geometry& geometry, const std::vector<int>& free_index)
 {
-  const int free_count = int(std::count_if(free_index.begin(), free_index.end(), [](int i) { return i >= 0; }));
-  Sparse_matrix laplacian(free_count, free_count);
-  int* start = laplacian.outerIndexPtr(); // zeros
-  std::vector<int> degree(std::size_t(free_count), 0);
-  for(const auto& e : geometry.edges)
-  {
-    const int fi = free_index[e[0]], fj = free_index[e[1]];
-    if(fi >= 0) ++degree[std::size_t(fi)];
-    if(fj >= 0) ++degree[std::size_t(fj)];
-    if(fi >= 0 && fj >= 0) ++start[fi + 1]; // row fj > fi of column fi
-  }
-  for(int c = 0; c < free_count; ++c)
-    start[c + 1] += start[c] + 1; // and the diagonal
-  laplacian.resizeNonZeros(start[free_count]);
-  int* rows = laplacian.innerIndexPtr();
-  double* values = laplacian.valuePtr();
-  std::vector<int> next(start, start + free_count);
-  for(int c = 0; c < free_count; ++c)
-  {
-    rows[next[std::size_t(c)]] = c;
-    values[next[std::size_t(c)]++] = double(degree[std::size_t(c)]);
-  }
-  for(const auto& e : geometry.edges)
-  {
-    const int fi = free_index[e[0]], fj = free_index[e[1]];
-    if(fi >= 0 && fj >= 0)
-    {
-      CGAL_assertion(fi < fj);
-      rows[next[std::size_t(fi)]] = fj;
-      values[next[std::size_t(fi)]++] = -1.;
-    }
-  }
-  return laplacian;
+  const std::size_t free_count = std::size_t(std::count_if(free_index.begin(), free_index.end(), [](int i) { return i >= 0; }));
+  return normal_equations(geometry.edges.size(), free_count, [&](std::size_t e, const auto& term) {
+           for(std::size_t end = 0; end < 2; ++end)
+             if(free_index[geometry.edges[e][end]] >= 0)
+               term(free_index[geometry.edges[e][end]], end == 0 ? 1. : -1.);
+           return 0.;
+         }).lower;
 }
 
 // Edge (i, j)'s wished difference `difference` of w_i - w_j in coordinate c, for the
@@ -102,8 +76,8 @@ inline void add_edge_difference(std::vector<double>& rhs, const std::vector<int>
 
 // The edges at each free vertex in edge order, those of free vertex f from first[f] to
 // first[f + 1]: ends[k] = 2 e for edge e where the vertex is its first end (sign(k) = +1),
-// 2 e + 1 where its second (-1), in 32 bits (a fifth of a small call's page faults went to
-// these lists in 64-bit indices and signs: doc/performance.md, change 33).
+// 2 e + 1 where its second (-1), in 32 bits: these lists are read every iteration, and on
+// small meshes their pages are a share of a call's time (doc/performance.md, "Memory").
 // free_vertex_edges() numbers the free vertices by `free_index`, which may be any one-to-one
 // numbering of them from 0 (the ADMM's is their rows in the factor's order); with every
 // vertex free (free_index[i] == i), the edges at each vertex of the mesh.
@@ -147,7 +121,7 @@ inline Free_vertex_edges free_vertex_edges(const Norm_preserving_geometry& geome
 inline void gather_edge_values(const Free_vertex_edges& incidence, const std::vector<std::array<double, 2> >& values,
                                std::vector<double>& rhs)
 {
-  const std::size_t block = 512; // free vertices: split from ~1,000 vertices on (doc/performance.md, change 12)
+  const std::size_t block = 512; // free vertices a block (doc/performance.md, "Parallel loops")
   parallel_for_each_block(incidence.first.size() - 1, block, [&](std::size_t begin, std::size_t end) {
     for(std::size_t f = begin; f < end; ++f)
     {

@@ -4,13 +4,14 @@
 // A fill-reducing elimination order whose elimination tree splits into balanced subtrees:
 // nested dissection by breadth-first level sets for the first levels, the pieces in AMD's
 // order. AMD alone orders some mesh Laplacians so that one subtree of the tree holds most of
-// the factor (90% on mushroom subdivided once), and the triangular solves, run on one thread
-// per part of the tree (Two_column_cholesky.h), then run mostly on one thread. Dissection
+// the factor, and the triangular solves, run on one thread per part of the tree
+// (Two_column_cholesky.h), then run mostly on one thread. Dissection
 // puts a separator last: among the levels of a breadth-first search from a pseudo-peripheral
 // vertex that leave at least `least_side` of the piece on each side, the one of fewest
 // vertices, less those with no neighbour in the next level (they go to the near side). The
 // levels of a breadth-first search are only joined by edges between consecutive levels, so
-// the two sides share no edge and their subtrees are disjoint (doc/performance.md, change 26).
+// the two sides share no edge and their subtrees are disjoint (doc/performance.md, "Sparse
+// Cholesky").
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_LEVEL_SET_DISSECTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_LEVEL_SET_DISSECTION_H

@@ -11,11 +11,11 @@
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
-#include <CGAL/Surface_mesh_parameterization/Norm_preserving_options.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_QP_solver.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Fixed_pair.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_refinement.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Similarity_transform.h>
@@ -26,6 +26,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -35,17 +36,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
-
-// Why `options` cannot be used, or nothing.
-inline std::string invalid_option(const Norm_preserving_options& options)
-{
-  if(options.sign_refinement_rounds < 0 || !(options.sign_refinement_tolerance >= 0)
-     || options.euclidean_refinement_iterations < 0 || !(options.euclidean_refinement_tolerance >= 0))
-    return "a refinement has a negative iteration limit or tolerance";
-  if(options.tiles_u < 1 || options.tiles_v < 1)
-    return "the tiling must be at least 1 x 1";
-  return std::string();
-}
 
 // Measures the steps: each call returns the seconds since the previous one.
 class Lap_timer
@@ -70,16 +60,18 @@ class Pipeline
 public:
   Pipeline(const InitialGuess& guess, const Solver& solver) : m_guess(guess), m_solver(solver) { }
 
-  Norm_preserving_options& options() { return m_options; }
-  const Norm_preserving_options& options() const { return m_options; }
+  Options& options() { return m_options; }
+  const Options& options() const { return m_options; }
 
   // Maps `geometry` (one connected component with at least one edge) to `uv`, with
   // `pair` (component indices, an edge) fixed, or an automatic pair. Fills `report` but for
   // `seconds`, the extraction time and the write-back time, which the caller measures.
+  // `progress`, if not null, is handed to the solver (Norm_preserving_problem::progress).
   Error_code run(Norm_preserving_geometry geometry, const std::optional<std::pair<std::size_t, std::size_t> >& pair,
-                 UV_vector& uv, Norm_preserving_report& report) const
+                 UV_vector& uv, Norm_preserving_report& report,
+                 const std::function<bool(double)>* progress = nullptr) const
   {
-    Run run(*this, geometry, uv, report);
+    Run run(*this, geometry, uv, report, progress);
     Error_code status = run.check_settings();
     if(status == OK) status = run.choose_fixed_pair(pair);
     if(status == OK) status = run.normalize();
@@ -99,6 +91,7 @@ private:
     Norm_preserving_geometry& geometry;
     UV_vector& uv;
     Norm_preserving_report& report;
+    const std::function<bool(double)>* progress;
     Lap_timer timer;
     std::size_t a = 0, b = 0;
     bool automatic = false;
@@ -108,8 +101,9 @@ private:
     Edge_signs signs;
     typename Solver::State state; // what a solve leaves to the next (the refinements' solves)
 
-    Run(const Pipeline& p, Norm_preserving_geometry& g, UV_vector& u, Norm_preserving_report& r)
-      : pipeline(p), geometry(g), uv(u), report(r)
+    Run(const Pipeline& p, Norm_preserving_geometry& g, UV_vector& u, Norm_preserving_report& r,
+        const std::function<bool(double)>* f)
+      : pipeline(p), geometry(g), uv(u), report(r), progress(f)
     { }
 
     Error_code fail(Error_code code, const std::string& message)
@@ -194,20 +188,18 @@ private:
 
     Error_code solve()
     {
-      Error_code status = solve_qp(signs, uv, nullptr, true);
-      if(status != OK)
-        return status;
-      timer.lap();
-      return OK;
+      const Error_code status = solve_qp(signs, uv, nullptr, &report.solver);
+      report.timings.solve = timer.lap();
+      return status;
     }
 
     Error_code refine()
     {
-      const Norm_preserving_options& o = pipeline.m_options;
+      const Options& o = pipeline.m_options;
       if(o.sign_refinement_rounds > 0)
       {
         auto round = [&](const Edge_signs& next, const UV_vector& order, UV_vector& candidate) {
-          return solve_qp(next, candidate, &order, false) == OK;
+          return solve_qp(next, candidate, &order, nullptr) == OK;
         };
         const std::vector<double> objectives =
           refine_signs(geometry, lengths, fixed, {o.sign_refinement_rounds, o.sign_refinement_tolerance}, signs, uv, round);
@@ -236,41 +228,32 @@ private:
       for(auto& p : uv)
         for(int c = 0; c < 2; ++c)
           p[c] *= unit;
-      const Norm_preserving_options& o = pipeline.m_options;
+      const Options& o = pipeline.m_options;
       fit_to_texture_space(uv, o.texture_fit, o.tiles_u, o.tiles_v);
       return OK;
     }
 
     // One QP solve with `qp_signs` from `result`, which satisfies them; `order` tells a warm
-    // start the values the signs come from. Only the first solve (`record`) writes the
-    // solver's figures into the report.
-    Error_code solve_qp(const Edge_signs& qp_signs, UV_vector& result, const UV_vector* order, bool record)
+    // start the values the signs come from. The solver writes what it did into `solved` (the
+    // report's, for the first solve; the refinement's solves report nothing).
+    Error_code solve_qp(const Edge_signs& qp_signs, UV_vector& result, const UV_vector* order,
+                        Norm_preserving_solve_report* solved)
     {
-      Norm_preserving_solve_report solved;
+      Norm_preserving_solve_report unreported;
+      Norm_preserving_solve_report& r = solved ? *solved : unreported;
       if(result.size() == fixed.size()) // an isolated edge: its two ends are the fixed pair
       {
         for(const Fixed_vertex& f : fixed)
           result[f.index] = f.target;
-        solved.status = NORM_PRESERVING_SOLVER_CONVERGED;
-        solved.optimality_gap = 0;
+        r = Norm_preserving_solve_report();
+        r.status = NORM_PRESERVING_SOLVER_CONVERGED;
+        r.optimality_gap = 0;
+        return OK;
       }
-      else if(!pipeline.m_solver.solve(Norm_preserving_problem{geometry, lengths, qp_signs, fixed, order}, result,
-                                       state, solved))
-        return record ? fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver failed: " + solved.message)
+      if(!pipeline.m_solver.solve(Norm_preserving_problem{geometry, lengths, qp_signs, fixed, order, progress}, result,
+                                  state, r))
+        return solved ? fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the QP solver failed: " + r.message)
                       : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-      if(record)
-      {
-        report.solver_status = solved.status;
-        report.has_solver_statistics = solved.has_statistics;
-        report.solver_iterations = solved.iterations;
-        report.kkt_residual = solved.kkt_residual;
-        report.optimality_gap = solved.optimality_gap;
-        if(solved.status != NORM_PRESERVING_SOLVER_CONVERGED)
-          report.warning = solved.message;
-        report.timings.assembly = solved.assembly_seconds;
-        report.timings.factorization = solved.factorization_seconds;
-        report.timings.iterations = solved.iteration_seconds;
-      }
       return OK;
     }
 
@@ -297,7 +280,7 @@ private:
 
   InitialGuess m_guess;
   Solver m_solver;
-  Norm_preserving_options m_options;
+  Options m_options;
 };
 
 } // namespace Norm_preserving

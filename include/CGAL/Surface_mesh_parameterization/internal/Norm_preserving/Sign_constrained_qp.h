@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Fixed_pair.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Normal_equations.h>
 
 #include <Eigen/Sparse>
 
@@ -122,6 +123,28 @@ inline std::pair<double, std::size_t> sign_constraint_extent(const Norm_preservi
 
 using Fixed_vertex = Norm_preserving_fixed_vertex;
 
+// Row e of Eq. 5 as a row of least squares, sum_e (d_e - C_e x)^2, in unknowns of the caller's
+// choosing: `unknowns(c, i, term, known)` calls term(k) for each unknown x_k that coordinate c
+// of vertex i is made of (with coefficient 1) and known(v) for a part v of it that is known (a
+// fixed value). Calls `term(k, a)` for each term a x_k of the row and returns d_e: the edge's
+// length less the known parts. The one definition of the QP's rows, which its assemblies read.
+template <typename Unknowns, typename Term>
+double sign_constrained_row(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
+                            const Edge_signs& signs, std::size_t e, const Unknowns& unknowns, const Term& term)
+{
+  double d = lengths[e];
+  for(int c = 0; c < 2; ++c)
+    for(std::size_t end = 0; end < 2; ++end)
+    {
+      const double a = end == 0 ? signs[e][c] : -signs[e][c];
+      unknowns(c, geometry.edges[e][end], [&](auto k) { term(k, a); }, [&](double v) { d -= a * v; });
+    }
+  return d;
+}
+
+// Eq. 5 written into a model of QuadraticProgramTraits: u_i at 2i, v_i at 2i + 1 (the fixed
+// vertices too, held by equality rows), the objective as 1/2 x'Px + q'x + r with P = 2 C'C,
+// q = -2 C'd and r = d'd, the sign constraints as rows 2e, 2e + 1 of A.
 template <typename QuadraticProgramTraits>
 void assemble_sign_constrained_qp(const Norm_preserving_geometry& geometry, const std::vector<double>& lengths,
                                   const Edge_signs& signs, const std::array<Fixed_vertex, 2>& fixed,
@@ -129,39 +152,29 @@ void assemble_sign_constrained_qp(const Norm_preserving_geometry& geometry, cons
 {
   const std::size_t n = 2 * geometry.points.size();
   const std::size_t m = 2 * geometry.edges.size();
-  std::vector<Eigen::Triplet<double> > hessian;
-  hessian.reserve(10 * geometry.edges.size());
-  std::vector<double> q(n, 0.);
+  const Normal_equations normal = normal_equations(m / 2, n, [&](std::size_t e, const auto& term) {
+    return sign_constrained_row(geometry, lengths, signs, e,
+                                [](int c, std::size_t i, const auto& unknown, const auto&) { unknown(int(2 * i) + c); },
+                                term);
+  });
+  const Sparse_matrix upper = normal.lower.transpose(); // by columns, as P is written
+  for(int c = 0; c < upper.outerSize(); ++c)
+    for(Sparse_matrix::InnerIterator it(upper, c); it; ++it)
+      qp.set_P(std::size_t(it.row()), std::size_t(it.col()), 2. * it.value());
+  for(std::size_t k = 0; k < n; ++k)
+    qp.set_q(k, -2. * normal.rhs[Eigen::Index(k)]);
   double r = 0;
+  for(double l : lengths)
+    r += l * l;
+  qp.set_r(r);
   for(std::size_t e = 0; e < m / 2; ++e)
-  {
-    const std::size_t i = geometry.edges[e][0], j = geometry.edges[e][1];
-    const std::array<int, 4> var = {int(2 * i), int(2 * i + 1), int(2 * j), int(2 * j + 1)};
-    const std::array<double, 4> a = {signs[e][0], signs[e][1], -signs[e][0], -signs[e][1]};
-    for(int s = 0; s < 4; ++s)
-    {
-      q[var[s]] -= 2. * lengths[e] * a[s];
-      for(int t = 0; t < 4; ++t)
-        if(var[s] <= var[t])
-          hessian.emplace_back(var[s], var[t], 2. * a[s] * a[t]);
-    }
-    r += lengths[e] * lengths[e];
     for(int c = 0; c < 2; ++c)
     {
-      qp.set_A(2 * e + c, 2 * i + c, signs[e][c]);
-      qp.set_A(2 * e + c, 2 * j + c, -signs[e][c]);
+      qp.set_A(2 * e + c, 2 * geometry.edges[e][0] + c, signs[e][c]);
+      qp.set_A(2 * e + c, 2 * geometry.edges[e][1] + c, -signs[e][c]);
       qp.set_l(2 * e + c, 0.);
       qp.set_u(2 * e + c, std::numeric_limits<double>::infinity());
     }
-  }
-  Eigen::SparseMatrix<double> P(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n)); // upper triangle, duplicates summed
-  P.setFromTriplets(hessian.begin(), hessian.end());
-  for(int c = 0; c < P.outerSize(); ++c)
-    for(Eigen::SparseMatrix<double>::InnerIterator it(P, c); it; ++it)
-      qp.set_P(std::size_t(it.row()), std::size_t(it.col()), it.value());
-  for(std::size_t k = 0; k < n; ++k)
-    qp.set_q(k, q[k]);
-  qp.set_r(r);
   for(std::size_t f = 0; f < 2; ++f)
     for(int c = 0; c < 2; ++c)
     {

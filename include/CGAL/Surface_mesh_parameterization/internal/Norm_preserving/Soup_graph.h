@@ -13,9 +13,10 @@
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Index_sets.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
 
-#include <CGAL/number_utils.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
 #include <array>
@@ -38,7 +39,7 @@ struct Soup_graph
   // soup vertex -> the soup vertex it is welded to (the lowest index at its position; itself
   // if not welded), `none` if on no polygon
   std::vector<std::size_t> representative;
-  std::vector<std::array<double, 3> > positions;          // of the representatives, by soup index
+  std::vector<std::array<double, 3> > positions;          // of the vertices, by soup index
   std::vector<std::array<std::size_t, 2> > edges;         // representatives, {i, j} with i < j, sorted
   std::vector<std::size_t> component;                     // representative -> component, `none` if not one
   std::vector<std::vector<std::size_t> > members;         // component -> its representatives, increasing
@@ -47,10 +48,21 @@ struct Soup_graph
   std::size_t repeated_corners = 0;                       // polygon corners dropped as repeats
 };
 
+// Positions read as points, for the triangulation of the polygons.
+struct Position_points
+{
+  const std::vector<std::array<double, 3> >& positions;
+  CGAL::Simple_cartesian<double>::Point_3 operator[](std::size_t i) const
+  {
+    return {positions[i][0], positions[i][1], positions[i][2]};
+  }
+};
+
 // What nothing downstream can take: no polygon, a polygon corner that is not a vertex, a
 // non-finite position of a vertex on a polygon.
-template <typename PointRange, typename PolygonRange>
-Error_code check_polygon_soup(const PointRange& points, const PolygonRange& polygons, std::string& message)
+template <typename PolygonRange>
+Error_code check_polygon_soup(const std::vector<std::array<double, 3> >& positions, const PolygonRange& polygons,
+                              std::string& message)
 {
   if(polygons.empty())
   {
@@ -63,15 +75,14 @@ Error_code check_polygon_soup(const PointRange& points, const PolygonRange& poly
     for(const auto& corner : polygon)
     {
       const std::size_t i = std::size_t(corner);
-      if(i >= points.size())
+      if(i >= positions.size())
       {
         message = "face " + std::to_string(k) + " refers to vertex " + std::to_string(i) + " of " +
-                  std::to_string(points.size());
+                  std::to_string(positions.size());
         return ERROR_WRONG_PARAMETER;
       }
-      const auto& p = points[i];
-      if(!(std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
-           std::isfinite(CGAL::to_double(p.z()))))
+      const std::array<double, 3>& p = positions[i];
+      if(!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
       {
         message = "vertex " + std::to_string(i) + " has a non-finite coordinate";
         return ERROR_WRONG_PARAMETER;
@@ -109,7 +120,7 @@ inline void weld_vertices(Soup_graph& graph, bool weld)
 
 // Sorts `edges` ({i, j}, i < j < n) and removes repeats: bucketed by their first vertex, each
 // bucket (a vertex's few higher neighbours) sorted on its own, faster than one sort of them
-// all (doc/performance.md, change 22).
+// all.
 inline void sort_unique_edges(std::size_t n, std::vector<std::array<std::size_t, 2> >& edges)
 {
   std::vector<std::size_t> first(n + 1, 0), second(edges.size());
@@ -132,42 +143,28 @@ inline void sort_unique_edges(std::size_t n, std::vector<std::array<std::size_t,
 
 // Builds the edge graph of a checked soup and its connected components, numbered in the
 // order of their first polygon. Linear in the size of the soup but for the sorts.
-template <typename PointRange, typename PolygonRange>
-Soup_graph build_soup_graph(const PointRange& points, const PolygonRange& polygons, bool weld)
+template <typename PolygonRange>
+Soup_graph build_soup_graph(std::vector<std::array<double, 3> > positions, const PolygonRange& polygons, bool weld)
 {
   Soup_graph graph;
-  const std::size_t n = points.size();
+  const std::size_t n = positions.size();
+  graph.positions = std::move(positions);
   graph.representative.assign(n, Soup_graph::none);
-  graph.positions.resize(n);
   for(const auto& polygon : polygons)
     for(const auto& corner : polygon)
       graph.representative[std::size_t(corner)] = std::size_t(corner);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    if(graph.representative[i] == Soup_graph::none)
-    {
-      ++graph.unreferenced;
-      continue;
-    }
-    graph.positions[i] = {CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
-                          CGAL::to_double(points[i].z())};
-  }
+  graph.unreferenced = std::size_t(std::count(graph.representative.begin(), graph.representative.end(), Soup_graph::none));
   weld_vertices(graph, weld);
+  const Position_points points{graph.positions};
 
   // Each polygon through the weld, split into simple loops and triangulated.
-  std::vector<std::size_t> parent(n);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  const auto root = [&parent](std::size_t i) {
-    while(parent[i] != i)
-      i = parent[i] = parent[parent[i]];
-    return i;
-  };
+  Index_sets connected(n);
   std::vector<std::size_t> corners;
   Polygon_pieces pieces;
   std::vector<std::size_t> first_corners; // a representative of each polygon, for the numbering
   const auto add_edge = [&](std::size_t i, std::size_t j) {
     graph.edges.push_back({(std::min)(i, j), (std::max)(i, j)});
-    parent[root(i)] = root(j);
+    connected.join(i, j);
   };
   for(const auto& polygon : polygons)
   {
@@ -190,7 +187,7 @@ Soup_graph build_soup_graph(const PointRange& points, const PolygonRange& polygo
   std::vector<std::size_t> number(n, Soup_graph::none);
   for(std::size_t i : first_corners)
   {
-    std::size_t& c = number[root(i)];
+    std::size_t& c = number[connected.find(i)];
     if(c == Soup_graph::none)
     {
       c = graph.members.size();
@@ -201,7 +198,7 @@ Soup_graph build_soup_graph(const PointRange& points, const PolygonRange& polygo
   for(std::size_t i = 0; i < n; ++i)
     if(graph.representative[i] == i)
     {
-      graph.component[i] = number[root(i)];
+      graph.component[i] = number[connected.find(i)];
       graph.members[graph.component[i]].push_back(i);
     }
   return graph;

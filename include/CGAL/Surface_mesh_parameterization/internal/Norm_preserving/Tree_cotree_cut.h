@@ -13,6 +13,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TREE_COTREE_CUT_H
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Index_sets.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Geometry.h>
 
 #include <CGAL/Dynamic_property_map.h>
@@ -23,7 +24,6 @@
 
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
-#include <boost/pending/disjoint_sets.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
@@ -124,28 +124,6 @@ index_surface(const TriangleMesh& mesh,
                    [](const auto& a, const auto& b) { return a.ends < b.ends; });
   return surface;
 }
-
-// Union-find over 0..n-1. Boost's disjoint sets on iterator property maps, whose `get` is found
-// by argument-dependent lookup: with raw pointers, `boost::detail::get` of the CSR graph hides
-// it when that header comes first.
-class Index_sets
-{
-  typedef boost::iterator_property_map<std::vector<std::size_t>::iterator,
-                                       boost::identity_property_map> Index_map;
-  std::vector<std::size_t> m_rank, m_parent;
-
-public:
-  explicit Index_sets(std::size_t n)
-    : m_rank(n, 0), m_parent(n), sets(Index_map(m_rank.begin()), Index_map(m_parent.begin()))
-  {
-    for(std::size_t i = 0; i < n; ++i)
-      sets.make_set(i);
-  }
-  Index_sets(const Index_sets&) = delete;
-  Index_sets& operator=(const Index_sets&) = delete;
-
-  boost::disjoint_sets<Index_map, Index_map> sets;
-};
 
 // Both directions of every edge, for the shortest-path tree and for pruning.
 struct Incidence

@@ -6,21 +6,16 @@
 // (x0 y0 x1 y1 ...): the ADMM solver's inner loop solves the same Laplacian for u and v in
 // every iteration, and one pass over the factor for both is faster than two column solves
 // (and than CHOLMOD's supernodal solve, whose BLAS calls are tiny for two columns). The
-// factorization itself is CHOLMOD's when the package is configured with CHOLMOD and the
-// matrix has at least 25,000 rows, converted to LL' in simplicial form; Eigen's SimplicialLLT
-// otherwise (faster below that size), in AMD's order or, where AMD's elimination tree would
-// leave most of a solve to one thread, a level-set dissection's (Level_set_dissection.h;
-// doc/performance.md, change 26). CHOLMOD orders with AMD, and with METIS (its
-// supernodal factorization) when AMD's factor would have `metis_fill_per_row` entries a row
-// or more: METIS's analysis takes 9-14 times as long as AMD's; the solves repay it where AMD
-// fills that much (METIS's factor is then 25-33% smaller), not below. The measurements behind
-// these choices are in doc/performance.md.
+// factorization is CHOLMOD's from `cholmod_minimum_rows` rows when the package is configured
+// with CHOLMOD (ordered by AMD, or by METIS where AMD's factor fills much), converted to LL' in
+// simplicial form; otherwise the package's own simplicial LL', in AMD's order or, where AMD's
+// elimination tree would leave most of a solve to one thread, a level-set dissection's
+// (Level_set_dissection.h). Why each: doc/performance.md, "Sparse Cholesky".
 //
 // The solve goes through the factor by supernodes: runs of consecutive columns with the same
 // rows below them, stored as a dense triangle and the rows below it, each row's entries side
 // by side. A row's index and its two unknowns are then read once for four of the run's
-// columns, not once per column: the solve, memory-bound on large meshes, takes 10-33% less
-// time from 9,000 vertices on, about the same below (doc/performance.md, change 10).
+// columns, not once per column, which matters where the solve is memory-bound.
 //
 // The triangular solves run on several threads (Parallel_for.h): the elimination tree is cut
 // into `part_count` sets of whole subtrees of about equal work and a "top" holding the
@@ -39,24 +34,19 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <mutex>
-#include <utility>
 #include <numeric>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
-
-#ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-// From this many entries a row in the factor in AMD's order, a matrix factored by CHOLMOD is
-// ordered by METIS instead (doc/performance.md, change 25).
-constexpr double metis_fill_per_row = 47;
-#endif
 
 class Two_column_cholesky
 {
@@ -152,16 +142,8 @@ public:
   std::size_t supernode_count() const { return m_supernodes.size(); }
 
 private:
-  static constexpr std::size_t part_count = 4;
-  // The dissection (factor_simplicial()): tried on a factor of at least
-  // `dissection_smallest_factor` entries whose longest path holds over
-  // `dissection_tried_above` of them, kept when its separators hold at most
-  // `dissection_separators` of AMD's entries, its longest path under `dissection_kept_below`
-  // of AMD's and its factoring work under `dissection_most_work` times AMD's.
-  static constexpr double dissection_smallest_factor = 1 << 18, dissection_tried_above = 0.8,
-                          dissection_separators = 0.15, dissection_kept_below = 0.75, dissection_most_work = 1.1;
-  static constexpr int dissection_levels = 2;
-  static_assert((std::size_t(1) << dissection_levels) == part_count, "a piece for each part");
+  static constexpr std::size_t part_count = Cholesky_settings::part_count;
+  static_assert((std::size_t(1) << Cholesky_settings::dissection_levels) == part_count, "a piece for each part");
 
   // The cut of an elimination tree into the parts and the top (split_tree()).
   struct Tree_split
@@ -170,11 +152,6 @@ private:
     std::vector<int> part;          // of each column not in the top
     double top = 0, heaviest = 0;   // the entries of the top and of the most loaded part
   };
-  // Factors of fewer entries are all top (split_tree()).
-  static constexpr double smallest_split = 1 << 14;
-  // A part may be this much over an even share of the work; the top may hold this share of it.
-  static constexpr double part_slack = 1.1, top_share = 0.1;
-
   struct Supernode
   {
     int column, width;          // its first column, the number of its columns
@@ -187,27 +164,17 @@ private:
   {
     m_n = std::size_t(lower.rows());
 #ifdef CGAL_NORM_PRESERVING_USE_CHOLMOD
-    if(m_n < cholmod_minimum_rows) // Eigen's factorization is faster at this size (performance.md, change 25)
+    if(m_n < Cholesky_settings::cholmod_minimum_rows)
       return factor_simplicial(lower, split);
-    struct Cholmod // frees the factor and the workspace on every way out
-    {
-      cholmod_common common;
-      cholmod_factor* factor = nullptr;
-      Cholmod() { cholmod_start(&common); }
-      ~Cholmod()
-      {
-        cholmod_free_factor(&factor, &common);
-        cholmod_finish(&common);
-      }
-    } cholmod;
+    Cholmod_factor cholmod;
     cholmod_common& common = cholmod.common;
     common.print = 0; // a matrix that is not positive definite is an answer (false), not a message
     common.supernodal = CHOLMOD_SIMPLICIAL;
     common.nmethods = 1;
     common.method[0].ordering = CHOLMOD_AMD;
-    cholmod_sparse view = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
+    cholmod_sparse view = cholmod_lower_view(lower);
     cholmod.factor = cholmod_analyze(&view, &common);
-    if(cholmod.factor != nullptr && common.lnz >= metis_fill_per_row * double(m_n))
+    if(cholmod.factor != nullptr && common.lnz >= Cholesky_settings::metis_fill_per_row * double(m_n))
     {
       cholmod_free_factor(&cholmod.factor, &common);
       common.supernodal = CHOLMOD_SUPERNODAL;
@@ -261,166 +228,194 @@ private:
 #endif
   }
 
-  // Eigen's simplicial LL' in `Ordering`'s order (AMD's, or NaturalOrdering for a matrix put in
-  // its order already), ordered, analyzed and factored in the steps of Eigen's compute(), its
-  // symbolic analysis read between them.
-  template <typename Ordering>
-  class Analyzed_llt : public Eigen::SimplicialLLT<Sparse_matrix, Eigen::Lower, Ordering>
+  // The matrix of lower triangle `source`, put in the order `position` (unknown i at row
+  // position[i]; null: as it is), written as the lower (`to_upper` false) or the upper
+  // triangle of the result. Each column's entries come in the order the source's columns are
+  // read, as in Eigen's twistedBy(): the up-looking factorization follows that order, so the
+  // factor's bits do too.
+  static void permute_symmetric(const Sparse_matrix& source, const int* position, bool to_upper, Sparse_matrix& result)
+  {
+    const int n = int(source.cols());
+    const int* first = source.outerIndexPtr();
+    const int* rows = source.innerIndexPtr();
+    const double* values = source.valuePtr();
+    auto at = [&](int i) { return position ? position[i] : i; };
+    result.resize(n, n);
+    int* start = result.outerIndexPtr(); // zeros
+    for(int j = 0; j < n; ++j)
+      for(int p = first[j]; p < first[j + 1]; ++p)
+        ++start[(to_upper ? (std::max)(at(rows[p]), at(j)) : (std::min)(at(rows[p]), at(j))) + 1];
+    std::partial_sum(start, start + n + 1, start);
+    result.resizeNonZeros(start[n]);
+    std::vector<int> next(start, start + n);
+    for(int j = 0; j < n; ++j)
+      for(int p = first[j]; p < first[j + 1]; ++p)
+      {
+        const int a = at(rows[p]), b = at(j);
+        const int k = next[std::size_t(to_upper ? (std::max)(a, b) : (std::min)(a, b))]++;
+        result.innerIndexPtr()[k] = to_upper ? (std::min)(a, b) : (std::max)(a, b);
+        result.valuePtr()[k] = values[p];
+      }
+  }
+
+  // The simplicial L L' of a matrix given as the upper triangle of it in its elimination order:
+  // its elimination tree and the entries of each column of the factor, then the factor by rows
+  // (up-looking, as in CSparse and Eigen's SimplicialLLT), diagonal first in each column. The
+  // package's own rather than Eigen's, whose analysis (which decides the order and the split)
+  // is not public (doc/decisions.md, "Other libraries' factors").
+  class Ordered_llt
   {
   public:
-    // Orders and analyzes the matrix of lower triangle `lower`. Returns the entries on the
-    // longest path of a solve: the top and the most loaded part of `split`.
-    double analyze(const Sparse_matrix& lower)
+    // Analyzes `upper`, kept for factor(). Returns the entries on the longest path of a solve:
+    // the top and the most loaded part of `split`.
+    double analyze(Sparse_matrix&& upper)
     {
-      const std::size_t n = std::size_t(lower.rows());
-      order(lower);
-      this->analyzePattern_preordered(m_ordered, false);
-      auto column = [&](std::size_t j) { return double(this->m_nonZerosPerCol[Eigen::Index(j)]) + 1.; }; // and the diagonal
-      entries = work = 0;
-      for(std::size_t j = 0; j < n; ++j)
+      m_upper = std::move(upper);
+      const std::size_t n = std::size_t(m_upper.cols());
+      m_parent.assign(n, -1);
+      m_count.assign(n, 1); // the diagonal
+      std::vector<int> visited(n, -1);
+      for(int k = 0; k < int(n); ++k)
       {
-        entries += column(j);
-        work += column(j) * column(j);
+        visited[std::size_t(k)] = k;
+        for(Sparse_matrix::InnerIterator entry(m_upper, k); entry; ++entry)
+          for(int i = int(entry.index()); i < k && visited[std::size_t(i)] != k; i = m_parent[std::size_t(i)])
+          {
+            if(m_parent[std::size_t(i)] < 0)
+              m_parent[std::size_t(i)] = k;
+            ++m_count[std::size_t(i)]; // L(k, i)
+            visited[std::size_t(i)] = k;
+          }
       }
-      split = split_tree(n, this->m_parent, column);
+      entries = work = 0;
+      for(int c : m_count)
+      {
+        entries += double(c);
+        work += double(c) * double(c);
+      }
+      split = split_tree(n, m_parent, [&](std::size_t j) { return double(m_count[j]); });
       return split.top + split.heaviest;
     }
 
-    // The numeric factorization, after analyze(); false if the matrix is not positive definite.
-    bool factor()
+    // Factors the analyzed matrix into `factor`; false if it is not positive definite.
+    bool factor(Sparse_matrix& factor)
     {
-#if EIGEN_VERSION_AT_LEAST(3, 4, 90)
-      this->template factorize_preordered<false, false>(m_ordered);
-#else
-      this->template factorize_preordered<false>(m_ordered);
-#endif
-      Sparse_matrix().swap(m_ordered);
-      return this->info() == Eigen::Success;
+      const int n = int(m_upper.cols());
+      factor.resize(n, n);
+      int* start = factor.outerIndexPtr();
+      for(int j = 0; j < n; ++j)
+        start[j + 1] = start[j] + m_count[std::size_t(j)];
+      factor.resizeNonZeros(start[n]);
+      int* rows = factor.innerIndexPtr();
+      double* values = factor.valuePtr();
+      const std::size_t size = std::size_t(n);
+      std::vector<int> filled(size, 0), visited(size, -1), pattern(size);
+      std::vector<double> y(size, 0.);
+      for(int k = 0; k < n; ++k)
+      {
+        // The pattern of row k of L in topological order, and A(:, k) scattered into y.
+        int top = n;
+        visited[std::size_t(k)] = k;
+        for(Sparse_matrix::InnerIterator entry(m_upper, k); entry; ++entry)
+        {
+          int i = int(entry.index());
+          y[std::size_t(i)] += entry.value();
+          int length = 0;
+          for(; visited[std::size_t(i)] != k; i = m_parent[std::size_t(i)])
+          {
+            pattern[std::size_t(length++)] = i;
+            visited[std::size_t(i)] = k;
+          }
+          while(length > 0)
+            pattern[std::size_t(--top)] = pattern[std::size_t(--length)];
+        }
+        // Row k of L by a sparse triangular solve, appended to its columns.
+        double d = y[std::size_t(k)];
+        y[std::size_t(k)] = 0;
+        for(; top < n; ++top)
+        {
+          const int i = pattern[std::size_t(top)];
+          const double l = y[std::size_t(i)] / values[start[i]];
+          y[std::size_t(i)] = 0;
+          const int end = start[i] + filled[std::size_t(i)];
+          for(int p = start[i] + 1; p < end; ++p)
+            y[std::size_t(rows[p])] -= values[p] * l;
+          d -= l * l;
+          rows[end] = k;
+          values[end] = l;
+          ++filled[std::size_t(i)];
+        }
+        if(!(d > 0))
+          return false;
+        rows[start[k]] = k;
+        values[start[k]] = std::sqrt(d);
+        filled[std::size_t(k)] = 1;
+      }
+      Sparse_matrix().swap(m_upper);
+      return true;
     }
-
-    // Moves the factor (by columns, diagonal first) into `factor`: its storage, not a copy (the
-    // copy's fresh pages took 10-30% of a small mesh's factorization: doc/performance.md, change 31).
-    void take_factor(Sparse_matrix& factor) { factor.swap(this->m_matrix); }
 
     double entries = 0, work = 0; // of the factor, and the work of factoring (factorization_work_per_entry())
     Tree_split split;
 
   private:
-    // Eigen's ordering step: fills the permutations and m_ordered. AMD is run on the full
-    // pattern, written here straight from the lower triangle: Eigen's AMDOrdering would first
-    // form A' + A of the full matrix, two more copies of a matrix already symmetric, and grow
-    // it for AMD's workspace in a third (doc/performance.md, change 32). The pattern and its
-    // order are those of Eigen's A' + A, so the permutation is the same.
-    void order(const Sparse_matrix& lower)
-    {
-      if constexpr(std::is_same<Ordering, Eigen::AMDOrdering<int> >::value)
-      {
-        Sparse_matrix full;
-        full_pattern(lower, full);
-        Eigen::internal::minimum_degree_ordering(full, this->m_Pinv);
-        this->m_P = this->m_Pinv.inverse();
-        m_ordered.resize(lower.rows(), lower.cols());
-        m_ordered.template selfadjointView<Eigen::Upper>() =
-          lower.selfadjointView<Eigen::Lower>().twistedBy(this->m_P);
-      }
-      else
-      {
-        const Sparse_matrix* ordered = nullptr; // the step fills m_ordered, given a lower triangle
-#if EIGEN_VERSION_AT_LEAST(3, 4, 90) // a flag for non-Hermitian matrices from then on
-        this->template ordering<false>(lower, ordered, m_ordered);
-#else
-        this->ordering(lower, ordered, m_ordered);
-#endif
-        CGAL_assertion(ordered == &m_ordered);
-      }
-    }
-
-    // Writes into `full` the pattern of the symmetric matrix of lower triangle `lower`
-    // (compressed, each column's rows in increasing order, as free_vertex_laplacian() writes
-    // it), its columns' rows in increasing order too, with the room AMD takes for its workspace
-    // (Eigen's minimum_degree_ordering) reserved: in place, since a returned copy would not keep
-    // it. The values are left unwritten (their pages untouched): AMD reads the pattern only.
-    static void full_pattern(const Sparse_matrix& lower, Sparse_matrix& full)
-    {
-      CGAL_precondition(lower.isCompressed());
-      const int n = int(lower.cols());
-      const int* first = lower.outerIndexPtr();
-      const int* rows = lower.innerIndexPtr();
-      full.resize(n, n);
-      int* start = full.outerIndexPtr(); // zeros
-      for(int j = 0; j < n; ++j)
-        for(int p = first[j]; p < first[j + 1]; ++p)
-        {
-          ++start[j + 1];
-          if(rows[p] != j)
-            ++start[rows[p] + 1];
-        }
-      std::partial_sum(start, start + n + 1, start);
-      const int entries = start[n];
-      full.reserve(entries + entries / 5 + 2 * n);
-      full.resizeNonZeros(entries);
-      std::vector<int> next(start, start + n);
-      int* row = full.innerIndexPtr();
-      for(int j = 0; j < n; ++j) // the rows above the diagonal come from the columns before
-        for(int p = first[j]; p < first[j + 1]; ++p)
-        {
-          const int i = rows[p];
-          row[next[j]++] = i;
-          if(i != j)
-            row[next[i]++] = j;
-        }
-    }
-
-    Sparse_matrix m_ordered; // the matrix in its order (upper triangle)
+    Sparse_matrix m_upper;
+    std::vector<int> m_parent, m_count;
   };
 
-  // Eigen's simplicial factorization in AMD's order or, below 25,000 rows where AMD's
-  // elimination tree splits so unevenly that the longest path of a solve holds most of the
-  // factor, in a level-set dissection's (the conditions: `dissection_tried_above` and the
-  // constants with it; doc/performance.md, change 26).
+  // The simplicial factorization in AMD's order (Eigen's AMD, public) or, below
+  // `cholmod_minimum_rows` rows where AMD's elimination tree splits so unevenly that the longest
+  // path of a solve holds most of the factor, in a level-set dissection's (the conditions:
+  // Cholesky_settings).
   bool factor_simplicial(const Sparse_matrix& lower, Tree_split& split)
   {
-    Analyzed_llt<Eigen::AMDOrdering<int> > by_amd;
-    const double path = by_amd.analyze(lower);
-    if(m_n < cholmod_minimum_rows && by_amd.entries >= dissection_smallest_factor &&
-       path > dissection_tried_above * by_amd.entries)
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> amd_order; // the k-th unknown eliminated at k
+    Eigen::AMDOrdering<int>()(lower, amd_order);
+    std::vector<int> amd_position(m_n);
+    for(std::size_t k = 0; k < m_n; ++k)
+      amd_position[std::size_t(amd_order.indices()[Eigen::Index(k)])] = int(k);
+    Sparse_matrix upper;
+    permute_symmetric(lower, amd_position.data(), true, upper);
+    Ordered_llt by_amd;
+    const double path = by_amd.analyze(std::move(upper));
+    if(m_n < Cholesky_settings::cholmod_minimum_rows && by_amd.entries >= Cholesky_settings::dissection_smallest_factor &&
+       path > Cholesky_settings::dissection_tried_above * by_amd.entries)
     {
-      const int* amd = by_amd.permutationPinv().indices().data(); // the k-th unknown eliminated at k
-      const std::vector<int> amd_order(amd, amd + m_n);
+      const std::vector<int> amd(amd_order.indices().data(), amd_order.indices().data() + m_n);
       const Level_set_dissection::Result dissection =
-        Level_set_dissection::order(Sparse_matrix(lower.selfadjointView<Eigen::Lower>()), dissection_levels, amd_order);
-      if(dissection.separator_entries <= dissection_separators * by_amd.entries)
+        Level_set_dissection::order(Sparse_matrix(lower.selfadjointView<Eigen::Lower>()), Cholesky_settings::dissection_levels, amd);
+      if(dissection.separator_entries <= Cholesky_settings::dissection_separators * by_amd.entries)
       {
-        Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> position{int(m_n)};
+        std::vector<int> position(m_n);
         for(std::size_t k = 0; k < m_n; ++k)
-          position.indices()[dissection.order[k]] = int(k);
-        Sparse_matrix permuted(lower.rows(), lower.cols());
-        permuted.selfadjointView<Eigen::Lower>() = lower.selfadjointView<Eigen::Lower>().twistedBy(position);
-        Analyzed_llt<Eigen::NaturalOrdering<int> > by_dissection;
-        if(by_dissection.analyze(permuted) < dissection_kept_below * path &&
-           by_dissection.work < dissection_most_work * by_amd.work)
-          return keep(by_dissection, position.indices(), split);
+          position[std::size_t(dissection.order[k])] = int(k);
+        Sparse_matrix permuted;
+        permute_symmetric(lower, position.data(), false, permuted);
+        permute_symmetric(permuted, nullptr, true, upper);
+        Ordered_llt by_dissection;
+        if(by_dissection.analyze(std::move(upper)) < Cholesky_settings::dissection_kept_below * path &&
+           by_dissection.work < Cholesky_settings::dissection_most_work * by_amd.work)
+          return keep(by_dissection, std::move(position), split);
       }
     }
-    return keep(by_amd, by_amd.permutationP().indices(), split);
+    return keep(by_amd, std::move(amd_position), split);
   }
 
   // Factors `llt` and keeps its factor (diagonal first in each column), the position of each
   // unknown and the tree's split.
-  template <typename Llt, typename Positions>
-  bool keep(Llt& llt, const Positions& position, Tree_split& split)
+  bool keep(Ordered_llt& llt, std::vector<int> position, Tree_split& split)
   {
-    if(!llt.factor())
+    std::unique_ptr<Sparse_matrix> factor(new Sparse_matrix());
+    if(!llt.factor(*factor))
       return false;
     split = std::move(llt.split);
-    m_position.assign(position.data(), position.data() + m_n);
-    m_factor.reset(new Sparse_matrix());
-    llt.take_factor(*m_factor);
+    m_position = std::move(position);
+    m_factor = std::move(factor);
     return true;
   }
 
   // The number of parts solved apart from the top: none for a small factor, which is all top
-  // (its solve then has no slots for the parts; doc/performance.md, change 32).
+  // (its solve then has no slots for the parts).
   std::size_t split_parts() const { return m_part_supernodes.empty() ? 0 : part_count; }
 
   // The triangle (by columns) comes first in a supernode's entries, then its rows.
@@ -538,9 +533,8 @@ private:
   // come later) and its entries (`entries(j)`): the largest subtree goes to the top (its root)
   // and its children replace it, until the subtrees, dealt largest first to the least loaded
   // part, load no part more than `part_slack` times an even share, or the top would exceed
-  // `top_share` of the work. Factors of under `smallest_split` entries (meshes of up to ~700
-  // vertices) are all top: a part would take less time than handing it to another thread
-  // (doc/performance.md, change 12).
+  // `top_share` of the work. Factors of under `smallest_split` entries are all top: a part
+  // would take less time than handing it to another thread.
   template <typename Parents, typename Entries>
   static Tree_split split_tree(std::size_t n, const Parents& parent, const Entries& entries)
   {
@@ -569,9 +563,9 @@ private:
     }
 
     Tree_split split;
-    split.in_top.assign(n, char(total < smallest_split));
+    split.in_top.assign(n, char(total < Cholesky_settings::smallest_split));
     split.part.assign(n, -1);
-    while(total >= smallest_split) // ends: the top's cap comes before the subtrees run out
+    while(total >= Cholesky_settings::smallest_split) // ends: the top's cap comes before the subtrees run out
     {
       std::sort(subtrees.begin(), subtrees.end(), [&](int a, int b) {
         return work[std::size_t(a)] > work[std::size_t(b)] || (work[std::size_t(a)] == work[std::size_t(b)] && a < b);
@@ -585,7 +579,7 @@ private:
       }
       const double heaviest = *std::max_element(load.begin(), load.end());
       const std::size_t r = std::size_t(subtrees.front());
-      if(heaviest <= part_slack * (total - split.top) / double(part_count) || split.top + entries(r) > top_share * total)
+      if(heaviest <= Cholesky_settings::part_slack * (total - split.top) / double(part_count) || split.top + entries(r) > Cholesky_settings::top_share * total)
         break;
       split.in_top[r] = 1;
       split.top += entries(r);
@@ -601,7 +595,7 @@ private:
           split.part[j] = split.part[std::size_t(parent[j])];
         load[std::size_t(split.part[j])] += entries(j);
       }
-    split.top = total < smallest_split ? total : split.top;
+    split.top = total < Cholesky_settings::smallest_split ? total : split.top;
     split.heaviest = *std::max_element(load.begin(), load.end());
     return split;
   }

@@ -1,0 +1,27 @@
+// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file Norm_preserving_quality.h
+/// \ingroup PkgNormPreservingParameterization
+/// How close to the optimum the default solver goes.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_QUALITY_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_QUALITY_H
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgNormPreservingParameterizationEnums
+/// The presets of `Norm_preserving_ADMM_solver`: how close to the optimum of the QP (Eq. 5) a
+/// solve goes, traded against its time. What each gives is measured in `doc/manual.md`.
+enum Norm_preserving_quality
+{
+  NORM_PRESERVING_DRAFT_QUALITY,   ///< a quick map, about 1% above the optimum, for previews
+  NORM_PRESERVING_DEFAULT_QUALITY, ///< close to the optimum (the default)
+  NORM_PRESERVING_EXACT_QUALITY    ///< the optimum, certified to `1e-9` (`Norm_preserving_ADMM_solver::certified()`)
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif
