@@ -36,8 +36,8 @@ double run(const char* name, Parameterizer parameterizer, Mesh& mesh)
   }
   const SMP::Norm_preserving_report& r = parameterizer.report();
   std::cout << name << ": objective " << r.initial_objective << " at the guess -> " << r.objective;
-  if(std::isfinite(r.optimality_gap))
-    std::cout << " (certified within " << r.optimality_gap << " of the optimum)";
+  if(std::isfinite(r.solver.optimality_gap))
+    std::cout << " (certified within " << r.solver.optimality_gap << " of the optimum)";
   else
     std::cout << " (no certificate)";
   std::cout << ", " << r.seconds << " s\n";

@@ -1,5 +1,7 @@
 // The simplest use: a mesh with one border (a disk), CGAL's parameterize() with the
-// norm-preserving parameterizer in place of LSCM or ARAP, the uv map written as a 2D OFF.
+// norm-preserving parameterizer in place of LSCM or ARAP, the uv map written as a 2D OFF. Then
+// the same through the parameterizer's own parameterize(), which keeps the report: CGAL's
+// parameterize() takes the parameterizer by value, so its report is lost with the copy.
 //
 // Usage: simple_parameterization [disk mesh] [output OFF]
 
@@ -42,6 +44,23 @@ int main(int argc, char** argv)
     std::cerr << "error: " << SMP::norm_preserving_error_message(status) << '\n';
     return 1;
   }
+
+  // The parameterizer's own call, on the same component, with the maps CGAL's call makes: the
+  // same uvs, and the report (how the solve ended, its certified distance to the optimum).
+  SMP::Norm_preserving_parameterizer_3<Mesh> parameterizer;
+  auto again = mesh.add_property_map<vertex_descriptor, Kernel::Point_2>("v:uv_again").first;
+  auto has_uv = mesh.add_property_map<vertex_descriptor, bool>("v:has_uv", false).first;
+  if(parameterizer.parameterize(mesh, bhd, again, get(CGAL::vertex_index, mesh), has_uv) != SMP::OK)
+  {
+    std::cerr << "error: " << parameterizer.report().message << '\n';
+    return 1;
+  }
+  bool same = true;
+  for(vertex_descriptor v : vertices(mesh))
+    same = same && get(again, v) == get(uvmap, v);
+  std::cout << "the parameterizer's own call: " << (same ? "the same uvs" : "other uvs") << ", "
+            << parameterizer.report().solver.method << ", certified within " << parameterizer.report().solver.optimality_gap
+            << " (relative) of the optimum\n";
 
   // Fitted into the unit square by default.
   std::size_t inside = 0;

@@ -8,6 +8,9 @@
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/subdivision_method_3.h>
+#include <CGAL/version_macros.h>
+
+#include <boost/property_map/function_property_map.hpp>
 
 #include <gtest/gtest.h>
 
@@ -20,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
@@ -234,6 +238,56 @@ TEST(TexturePolygonMeshErrors, FixedPairOnNoFace)
   EXPECT_EQ(t.status, SMP::ERROR_WRONG_PARAMETER);
   EXPECT_NE(t.report.message.find("no face"), std::string::npos);
   EXPECT_TRUE(t.untouched());
+}
+
+// Named parameters the CGAL way: a chain of the package's takes CGAL's point maps beside its own
+// parameters in any order; a chain of CGAL's own (no parameter of the package) is read too; on
+// CGAL 6 a chain of CGAL's can combine() one of the package's. The same options give the same
+// uvs, bit for bit, however they are given.
+TEST(NamedParameters, AreReadHoweverTheyAreGiven)
+{
+  const Mesh mesh = np_test::load_mesh("torus_quad");
+  const Textured reference(mesh, SMP::parameters::tiling(3, 2));
+  ASSERT_EQ(reference.status, SMP::OK);
+  // The same points through a map of the caller's, and the options in another order.
+  std::vector<Point_3> copy(mesh.points().begin(), mesh.points().end());
+  const auto points = CGAL::make_property_map(copy);
+  const auto by_index = [&](Vertex v) { return copy[std::size_t(v)]; };
+  const auto mapped = boost::make_function_property_map<Vertex, Point_3>(by_index);
+  const Textured reordered(mesh, SMP::parameters::vertex_point_map(mapped).tiling(3, 2).weld_coincident_vertices(true));
+  EXPECT_EQ(reordered.status, SMP::OK);
+  for(Vertex v : vertices(mesh))
+    EXPECT_EQ(get(reordered.uv, v), get(reference.uv, v));
+  // The whole-soup call on the same vertices through a point map.
+  std::vector<std::size_t> indices(copy.size());
+  std::iota(indices.begin(), indices.end(), std::size_t(0));
+  std::vector<std::vector<std::size_t> > polygons;
+  for(auto f : faces(mesh))
+  {
+    polygons.emplace_back();
+    for(Vertex v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      polygons.back().push_back(std::size_t(v));
+  }
+  std::vector<Point_2> uv(copy.size());
+  EXPECT_EQ(SMP::texture_polygon_soup(indices, polygons, CGAL::make_property_map(uv),
+                                      SMP::parameters::point_map(points).tiling(3, 2)),
+            SMP::OK);
+  for(Vertex v : vertices(mesh))
+    EXPECT_EQ(uv[std::size_t(v)], get(reference.uv, v));
+  // A chain of CGAL's: its vertex point map, the package's defaults.
+  Mesh plain_mesh = mesh;
+  auto plain_uv = plain_mesh.add_property_map<Vertex, Point_2>("v:uv").first;
+  EXPECT_EQ(SMP::texture_polygon_mesh(plain_mesh, plain_uv, CGAL::parameters::vertex_point_map(mapped)), SMP::OK);
+  const Textured defaults(mesh);
+  for(Vertex v : vertices(mesh))
+    EXPECT_EQ(get(plain_uv, v), get(defaults.uv, v));
+#if CGAL_VERSION_MAJOR >= 6
+  EXPECT_EQ(SMP::texture_polygon_mesh(plain_mesh, plain_uv,
+                                      CGAL::parameters::vertex_point_map(mapped).combine(SMP::parameters::tiling(3, 2))),
+            SMP::OK);
+  for(Vertex v : vertices(mesh))
+    EXPECT_EQ(get(plain_uv, v), get(reference.uv, v));
+#endif
 }
 
 // The accuracy that the README and the manual state for each preset, through every way in: on

@@ -65,7 +65,6 @@ public:
     m_settings.tolerance = tolerance;
     m_settings.max_iterations = max_iterations;
     m_settings.time_limit = time_limit;
-    m_method = "ADMM, stopping rule at " + number(tolerance);
   }
 
   /// a solver of the preset `quality`, stopping after `time_limit` seconds at the latest:
@@ -76,13 +75,7 @@ public:
     : Norm_preserving_ADMM_solver(quality == NORM_PRESERVING_EXACT_QUALITY
                                     ? certified(preset_tolerance(quality), 200000, time_limit)
                                     : Norm_preserving_ADMM_solver(preset_tolerance(quality), 20000, time_limit))
-  {
-    m_method = std::string("ADMM, ") + (quality == NORM_PRESERVING_DRAFT_QUALITY   ? "draft"
-                                        : quality == NORM_PRESERVING_EXACT_QUALITY ? "exact"
-                                                                                   : "default") +
-               " quality (" + (quality == NORM_PRESERVING_EXACT_QUALITY ? "certified gap " : "stopping rule at ") +
-               number(preset_tolerance(quality)) + ")";
-  }
+  { }
 
   /// the tolerance of the preset `quality`: of the stopping rule, or for
   /// `NORM_PRESERVING_EXACT_QUALITY` of the certified gap.
@@ -106,7 +99,6 @@ public:
   {
     Norm_preserving_ADMM_solver solver(gap, max_iterations, time_limit);
     solver.m_settings.certified = true;
-    solver.m_method = "ADMM, certified gap " + number(gap);
     return solver;
   }
 
@@ -121,20 +113,34 @@ public:
     internal::Norm_preserving::Sign_constrained_admm admm(problem.geometry, problem.lengths, problem.signs, problem.fixed,
                                                           m_settings, uv, &state, problem.order, problem.progress);
     const bool solved = admm.solve(report);
-    report.method = m_method;
+    report.method = method();
     return solved;
   }
 
-private:
-  static std::string number(double x)
+  /// the solver and its setting in words, such as "ADMM, default quality (stopping rule at
+  /// 2.5e-05)": a preset's name where the settings are a preset's.
+  std::string method() const
   {
+    namespace NP = internal::Norm_preserving;
+    const NP::Admm_settings& s = m_settings;
     std::ostringstream out;
-    out << x;
+    out << "ADMM, ";
+    if(s.certified)
+      out << (s.tolerance == NP::admm_exact_gap && s.max_iterations == 200000 ? "exact quality (" : "(")
+          << "certified gap " << s.tolerance << ")";
+    else
+      out << (s.max_iterations != 20000                  ? "("
+              : s.tolerance == NP::admm_draft_tolerance   ? "draft quality ("
+              : s.tolerance == NP::admm_default_tolerance ? "default quality ("
+                                                          : "(")
+          << "stopping rule at " << s.tolerance << ")";
+    if(s.time_limit < std::numeric_limits<double>::infinity())
+      out << ", time limit " << s.time_limit << " s";
     return out.str();
   }
 
+private:
   internal::Norm_preserving::Admm_settings m_settings;
-  std::string m_method;
 };
 
 /// \cond SKIP_IN_MANUAL

@@ -13,11 +13,11 @@ namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgNormPreservingParameterizationEnums
 /// The presets of `Norm_preserving_ADMM_solver`: how close to the optimum of the QP (Eq. 5) a
-/// solve goes, traded against its time. What each gives is measured in `doc/manual.md`.
+/// solve goes, traded against its time (`doc/manual.md`, "Accuracy, speed and solvers").
 enum Norm_preserving_quality
 {
-  NORM_PRESERVING_DRAFT_QUALITY,   ///< a quick map, about 1% above the optimum, for previews
-  NORM_PRESERVING_DEFAULT_QUALITY, ///< close to the optimum (the default)
+  NORM_PRESERVING_DRAFT_QUALITY,   ///< a quick map for previews: at most 2% above the optimum
+  NORM_PRESERVING_DEFAULT_QUALITY, ///< at most 1e-4 above the optimum (the default)
   NORM_PRESERVING_EXACT_QUALITY    ///< the optimum, certified to `1e-9` (`Norm_preserving_ADMM_solver::certified()`)
 };
 

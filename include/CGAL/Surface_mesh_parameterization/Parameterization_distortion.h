@@ -8,13 +8,14 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_DISTORTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_DISTORTION_H
 
-#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Polygon_triangulation.h>
+#include <CGAL/Surface_mesh_parameterization/triangulate_polygon_soup.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Soup_graph.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/iterator.h>
 #include <CGAL/number_utils.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -23,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -265,22 +267,16 @@ Parameterization_distortion measure_soup_distortion(const PointRange& points, co
                                                     VertexUVMap uvmap, VertexParameterizedMap vpmap)
 {
   namespace NP = internal::Norm_preserving;
+  std::vector<std::array<std::size_t, 3> > all, triangles;
+  triangulate_polygon_soup(points, polygons, std::back_inserter(all), CGAL::Emptyset_iterator());
   std::vector<std::array<std::size_t, 2> > measured_edges;
-  std::vector<std::array<std::size_t, 3> > triangles;
-  NP::Polygon_pieces pieces;
-  std::vector<std::size_t> corners;
-  for(const auto& polygon : polygons)
-  {
-    corners.assign(polygon.begin(), polygon.end());
-    pieces.split(points, corners, [](std::size_t, std::size_t) { },
-      [&](const std::array<std::size_t, 3>& t) {
-        if(!get(vpmap, t[0]) || !get(vpmap, t[1]) || !get(vpmap, t[2]))
-          return;
-        triangles.push_back(t);
-        for(int e = 0; e < 3; ++e)
-          measured_edges.push_back({(std::min)(t[e], t[(e + 1) % 3]), (std::max)(t[e], t[(e + 1) % 3])});
-      });
-  }
+  for(const std::array<std::size_t, 3>& t : all)
+    if(get(vpmap, t[0]) && get(vpmap, t[1]) && get(vpmap, t[2]))
+    {
+      triangles.push_back(t);
+      for(int e = 0; e < 3; ++e)
+        measured_edges.push_back({(std::min)(t[e], t[(e + 1) % 3]), (std::max)(t[e], t[(e + 1) % 3])});
+    }
   NP::sort_unique_edges(points.size(), measured_edges);
   auto xyz = [&](std::size_t i) -> NP::Vec3 {
     return {CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())};

@@ -370,7 +370,7 @@ private:
   bool factor_simplicial(const Sparse_matrix& lower, Tree_split& split)
   {
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> amd_order; // the k-th unknown eliminated at k
-    Eigen::AMDOrdering<int>()(lower, amd_order);
+    Eigen::AMDOrdering<int>()(lower.selfadjointView<Eigen::Lower>(), amd_order); // the full pattern, sorted: as A' + A
     std::vector<int> amd_position(m_n);
     for(std::size_t k = 0; k < m_n; ++k)
       amd_position[std::size_t(amd_order.indices()[Eigen::Index(k)])] = int(k);
