@@ -1,28 +1,38 @@
 // The command-line tool, and the main job: textures a mesh (by default the cow of CGAL's
-// collection) with the norm-preserving parameterizer and writes a textured OBJ with its MTL
-// and a checkerboard PNG, the UV layout as an SVG and a distortion report. Run with --help.
+// collection) with the norm-preserving parameterizer and writes it textured, as an OBJ with its
+// MTL and texture image or as a binary glTF, with the UV layout as an SVG, a distortion report
+// and, if asked, a web page that shows it. Run with --help.
 
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/triangulate_polygon_soup.h>
 #include <CGAL/property_map.h>
 
-#include "obj_soup_reader.h"
+#include "checkerboard.h"
+#include "glb_writer.h"
+#include "output_files.h"
+#include "progress_display.h"
+#include "soup_reader.h"
+#include "texture_image.h"
 #include "texture_settings.h"
 #include "textured_obj_writer.h"
 #include "uv_layout_svg.h"
+#include "vertex_uv.h"
+#include "viewer_page.h"
 
 #include <algorithm>
 #include <array>
-#include <cctype>
+#include <cerrno>
 #include <cmath>
-#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <future>
+#include <functional>
 #include <iostream>
-#include <map>
+#include <iterator>
+#include <limits>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -31,6 +41,7 @@
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
+using np_examples::lower_case;
 using Kernel = CGAL::Simple_cartesian<double>;
 using Point_3 = Kernel::Point_3;
 using Polygon = std::vector<std::size_t>;
@@ -48,17 +59,32 @@ const char* const usage =
   "\n"
   "Textures any polygon soup (closed, with holes, several components, non-manifold,\n"
   "inconsistently oriented or non-orientable) with the norm-preserving parameterization of\n"
-  "Lai & Cheng, with no cut and no seam, and writes\n"
+  "Lai & Cheng, with no cut and no seam, and writes, as an OBJ (the default):\n"
   "  output.obj         the mesh with one vt per vertex, using output.mtl\n"
   "  output.mtl         a material whose texture is output.png\n"
-  "  output.png         a checkerboard texture\n"
+  "  output.png         the texture: a checkerboard, or a copy of the --texture image\n"
+  "                     (output.jpg for a JPEG image)\n"
+  "or, as a glb (--format glb, or an output name ending in .glb):\n"
+  "  output.glb         binary glTF 2.0: the mesh with one vertex per input vertex, its\n"
+  "                     normals, uvs and triangles, and the texture embedded\n"
+  "and in both cases\n"
   "  output_uv.svg      the UV layout (flipped faces in red)\n"
   "  output_report.txt  the objective, the time and the distortion measures\n"
+  "  output.html        with --viewer: a page that shows the textured model, turned with the\n"
+  "                     mouse, in any browser with WebGL, offline (three.js inlined)\n"
   "\n"
-  "  input    OFF, OBJ, PLY, STL or GOCAD TS file (default: the cow of CGAL's collection)\n"
-  "  output   basename of the files written (default: cow_textured)\n"
+  "  input    OFF, OBJ, PLY (triangle strips too), STL or GOCAD TS file (default: the cow of\n"
+  "           CGAL's collection)\n"
+  "  output   basename of the files written, or a name ending in .obj or .glb, which chooses\n"
+  "           the format (default: the input's name with _textured; cow_textured)\n"
   "\n"
   "options:\n"
+  "  --texture IMAGE               texture with this PNG or JPEG image instead of the\n"
+  "                                checkerboard (copied beside an OBJ, embedded in a glb)\n"
+  "  --format obj|glb              the format of the textured mesh (default: by the output\n"
+  "                                name, else obj)\n"
+  "  --viewer                      also write output.html\n"
+  "  --quiet                       print nothing but errors: no progress, no summary\n"
   "  --guess xy|combination|graph  initial guess (default xy: the paper's XY-MinMax)\n"
   "  --fit uniform|clamp|none      fit into texture space (default uniform: [0,1]^2,\n"
   "                                aspect kept; clamp: each axis to [0,1]; none: mesh units)\n"
@@ -69,6 +95,7 @@ const char* const usage =
   "                                draft: about 1% above, fastest; exact: certified to 1e-9)\n"
   "  --tolerance T                 the solver's tolerance (default: the quality's)\n"
   "  --time-limit S                stop the solver after S seconds with its best point\n"
+  "                                (default inf: no limit)\n"
   "  --refine-signs                re-solve with the signs of the solution (at most 10 rounds)\n"
   "  --refine-euclidean            then minimize the Euclidean edge-length error from the\n"
   "                                solution (stress majorization, at most 1000 steps)\n"
@@ -77,17 +104,82 @@ const char* const usage =
   "                                seams gets no seam)\n"
   "  --help                        print this and exit\n"
   "\n"
-  "Nothing is written unless every file can be. Exit status 0 on success, 1 on bad input or\n"
-  "failure, 2 on a bad command line.\n";
+  "The summary goes to stdout, the progress to stderr: on a terminal, one line updated in\n"
+  "place for every step that runs over a second; into a file or a pipe, whole lines (the\n"
+  "time of every step). The environment variable NP_PROGRESS_DELAY=S sets that second to S\n"
+  "seconds (0: every step shown; inf: none). Nothing is written unless every file can be.\n"
+  "Exit status 0 on success, 1 on bad input or failure, 2 on a bad command line.\n";
 
 struct Settings
 {
   std::string input = std::string(NP_MESH_DIR) + "/cow.off";
-  std::string output = "cow_textured";
+  std::string output = "cow_textured"; // the basename: without .obj or .glb
+  std::string format;                  // obj or glb; empty: by the output name, else obj
+  std::string texture_image;           // the image's path; empty: the checkerboard
+  bool viewer = false;
+  bool quiet = false;
   np_examples::Texture_settings texture;
 };
 
-// Parses the command line; returns an error message, or nothing on success.
+// Takes the format from the output name's extension (.obj or .glb), which leaves the basename;
+// returns an error message, or nothing.
+std::optional<std::string> take_format_from_output(Settings& s)
+{
+  const std::string extension = lower_case(fs::path(s.output).extension().string());
+  if(extension != ".obj" && extension != ".glb")
+  {
+    if(s.format.empty())
+      s.format = "obj";
+    return std::nullopt;
+  }
+  if(!s.format.empty() && "." + s.format != extension)
+    return "--format " + s.format + " and the output name " + s.output + " disagree";
+  s.format = extension.substr(1);
+  s.output.erase(s.output.size() - extension.size());
+  return std::nullopt;
+}
+
+// `text` as a whole number, if it is one (strtod's syntax: 1e-3, inf).
+std::optional<double> number_in(const std::string& text)
+{
+  char* end = nullptr;
+  errno = 0;
+  const double number = std::strtod(text.c_str(), &end);
+  if(text.empty() || end != text.c_str() + text.size() || (errno == ERANGE && std::isinf(number)))
+    return std::nullopt;
+  return number;
+}
+
+// `text` as a non-negative integer that fits an int, if it is one.
+std::optional<int> count_in(const std::string& text)
+{
+  if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 9)
+    return std::nullopt;
+  return std::stoi(text);
+}
+
+// `text` as a vertex index, if it is one.
+std::optional<std::size_t> index_in(const std::string& text)
+{
+  if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 18)
+    return std::nullopt;
+  return std::size_t(std::stoull(text));
+}
+
+// A problem of np_examples::settings_problem(), which names the option as the Python module
+// does ("time limit takes ..."), in the command line's words ("--time-limit takes ...").
+std::string as_option(const std::string& problem)
+{
+  const std::size_t takes = problem.find(" takes ");
+  std::string name = problem.substr(0, takes);
+  std::replace(name.begin(), name.end(), ' ', '-');
+  std::replace(name.begin(), name.end(), '_', '-');
+  return "--" + name + (takes == std::string::npos ? std::string() : problem.substr(takes));
+}
+
+// Parses the command line; returns an error message, or nothing on success. Here only the
+// syntax of each option is checked; the values of the texture's settings are checked after, by
+// np_examples::settings_problem(), as the Python module checks them.
 std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
 {
   std::vector<std::string> positional;
@@ -100,6 +192,24 @@ std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
     };
     if(arg == "--help" || arg == "-h")
       help = true;
+    else if(arg == "--viewer")
+      s.viewer = true;
+    else if(arg == "--quiet")
+      s.quiet = true;
+    else if(arg == "--texture")
+    {
+      const auto v = value();
+      if(!v || v->empty())
+        return std::string("--texture takes an image file (PNG or JPEG)");
+      s.texture_image = *v;
+    }
+    else if(arg == "--format")
+    {
+      const auto v = value();
+      if(!v || (*v != "obj" && *v != "glb"))
+        return std::string("--format takes obj or glb");
+      s.format = *v;
+    }
     else if(arg == "--keep-coincident")
       s.texture.keep_coincident = true;
     else if(arg == "--refine-signs")
@@ -109,306 +219,145 @@ std::optional<std::string> parse(int argc, char** argv, Settings& s, bool& help)
     else if(arg == "--guess" || arg == "--fit" || arg == "--quality")
     {
       const auto v = value();
-      std::string& setting = arg == "--guess" ? s.texture.guess : arg == "--fit" ? s.texture.fit : s.texture.quality;
-      setting = v ? *v : std::string();
-      if(const auto problem = np_examples::settings_problem(s.texture))
-        return "--" + *problem;
+      if(!v)
+        return arg + " takes a value";
+      (arg == "--guess" ? s.texture.guess : arg == "--fit" ? s.texture.fit : s.texture.quality) = *v;
     }
     else if(arg == "--tolerance" || arg == "--time-limit")
     {
       const auto v = value();
-      std::istringstream in(v ? *v : std::string());
-      double number = 0;
-      char rest = 0;
-      if(!(in >> number) || in >> rest || !(number > 0) || !std::isfinite(number))
-        return arg + " takes a positive number" + (arg == "--time-limit" ? std::string(" of seconds") : std::string());
+      const std::optional<double> number = v ? number_in(*v) : std::nullopt;
+      if(!number)
+        return arg + " takes a number" + (arg == "--time-limit" ? std::string(" of seconds") : std::string());
       if(arg == "--tolerance")
-        s.texture.tolerance = number;
+        s.texture.tolerance = *number;
       else
-        s.texture.time_limit = number;
+        s.texture.time_limit = *number;
     }
     else if(arg == "--tiles")
     {
       const auto v = value();
-      char x = 0, rest = 0;
-      std::istringstream in(v ? *v : std::string());
-      if(!(in >> s.texture.tiles_u >> x >> s.texture.tiles_v) || (x != 'x' && x != 'X') || in >> rest ||
-         s.texture.tiles_u < 1 || s.texture.tiles_v < 1)
-        return "--tiles takes MxN with M, N >= 1, such as 2x3";
+      const std::size_t x = v ? v->find_first_of("xX") : std::string::npos;
+      const std::optional<int> m = x != std::string::npos ? count_in(v->substr(0, x)) : std::nullopt;
+      const std::optional<int> n = x != std::string::npos ? count_in(v->substr(x + 1)) : std::nullopt;
+      if(!m || !n)
+        return std::string("--tiles takes MxN, such as 2x3");
+      s.texture.tiles_u = *m;
+      s.texture.tiles_v = *n;
     }
     else if(arg == "--fixed-pair")
     {
       const auto v = value();
-      long long a = -1, b = -1;
-      char comma = 0, rest = 0;
-      std::istringstream in(v ? *v : std::string());
-      if(!(in >> a >> comma >> b) || comma != ',' || in >> rest || a < 0 || b < 0)
-        return "--fixed-pair takes two vertex indices A,B such as 0,1";
-      s.texture.fixed_pair = std::make_pair(std::size_t(a), std::size_t(b));
+      const std::size_t comma = v ? v->find(',') : std::string::npos;
+      const std::optional<std::size_t> a = comma != std::string::npos ? index_in(v->substr(0, comma)) : std::nullopt;
+      const std::optional<std::size_t> b = comma != std::string::npos ? index_in(v->substr(comma + 1)) : std::nullopt;
+      if(!a || !b)
+        return std::string("--fixed-pair takes two vertex indices A,B such as 0,1");
+      s.texture.fixed_pair = std::make_pair(*a, *b);
     }
     else if(arg.size() > 1 && arg[0] == '-')
       return "unknown option " + arg;
     else
       positional.push_back(arg);
   }
+  if(const std::optional<std::string> problem = np_examples::settings_problem(s.texture))
+    return as_option(*problem);
   if(positional.size() > 2)
-    return "too many arguments";
+    return std::string("too many arguments");
   if(positional.size() > 0) s.input = positional[0];
   if(positional.size() > 1) s.output = positional[1];
   else if(positional.size() == 1) s.output = fs::path(s.input).stem().string() + "_textured";
+  if(const std::optional<std::string> disagree = take_format_from_output(s))
+    return disagree;
   const fs::path name = fs::path(s.output).filename();
   if(name.empty() || name == "." || name == "..")
     return "the output basename must end in a file name, not '" + s.output + "'";
   return std::nullopt;
 }
 
-// The standard error's own buffer, taken before any work can redirect std::cerr (the reader's
-// messages are captured on the work's thread while the progress is shown).
-std::streambuf* const terminal_buffer = std::cerr.rdbuf();
-
-// Runs `work` and, when it takes more than a second, shows the elapsed time on stderr.
-template <typename Work>
-auto with_progress(const std::string& what, Work work)
+// What the output files are written from, once the work has made it.
+struct Textured_soup
 {
-  std::ostream terminal(terminal_buffer);
-  auto result = std::async(std::launch::async, work);
-  int seconds = 0;
-  while(result.wait_for(std::chrono::seconds(1)) != std::future_status::ready)
-    terminal << "\r" << what << "... " << ++seconds << " s" << std::flush;
-  if(seconds > 0)
-    terminal << "\r" << what << ": done in about " << seconds << " s\n";
-  return result.get();
-}
-
-// Why CGAL 5.5's PLY soup reader cannot read the vertices of the file at `path`, if it cannot:
-// it reads a missing x, y or z as 0, and crashes on coordinates that are not floating point or
-// on a property declared before any element.
-std::optional<std::string> ply_vertex_problem(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line, word;
-  if(!std::getline(in, line) || !(std::istringstream(line) >> word) || word != "ply")
-    return std::nullopt; // not a PLY header: the reader says what is wrong
-  bool in_element = false, in_vertex = false;
-  std::map<std::string, std::string> types; // of the current vertex element's scalar properties, the first of a name
-  auto vertex_problem = [&]() -> std::optional<std::string> {
-    for(const std::string axis : {"x", "y", "z"})
-    {
-      const auto type = types.find(axis);
-      if(type == types.end())
-        return "its vertices have no " + axis + " coordinate";
-      if(type->second != "float" && type->second != "float32" && type->second != "double" && type->second != "float64")
-        return "its vertex coordinate " + axis + " is of type " + type->second + " (CGAL 5.5 reads float and double)";
-    }
-    return std::nullopt;
-  };
-  while(std::getline(in, line))
-  {
-    std::istringstream words(line);
-    if(!(words >> word) || (word != "element" && word != "property" && word != "end_header"))
-      continue;
-    if(word == "property" && !in_element)
-      return std::string("a property is declared before any element");
-    if(word != "property" && in_vertex) // the vertex element ends here
-      if(const std::optional<std::string> problem = vertex_problem())
-        return problem;
-    std::string type, name;
-    if(word == "end_header")
-      return std::nullopt;
-    if(word == "element")
-    {
-      in_element = true;
-      in_vertex = words >> name && (name == "vertex" || name == "vertices");
-      types.clear();
-    }
-    else if(in_vertex && words >> type >> name && type != "list")
-      types.emplace(name, type);
-  }
-  return std::nullopt; // no end of the header: the reader says what is wrong
-}
-
-// The first line of `text` (an exception's message may hold several).
-std::string first_line(const std::string& text)
-{
-  return text.substr(0, text.find('\n'));
-}
-
-// The standard streams captured while it lives (a reader's messages), restored even when the
-// reader throws.
-struct Captured_streams
-{
-  std::ostringstream text;
-  std::streambuf* const err = std::cerr.rdbuf(text.rdbuf());
-  std::streambuf* const out = std::cout.rdbuf(text.rdbuf());
-  ~Captured_streams()
-  {
-    std::cerr.rdbuf(err);
-    std::cout.rdbuf(out);
-  }
+  Soup soup;
+  UV uv;                          // one per vertex; NaN on a vertex on no face (written as (0, 0))
+  std::vector<char> has_uv;       // false on a vertex on no face
+  std::string report;             // output_report.txt
+  std::vector<unsigned char> glb; // output.glb, also shown by output.html
 };
 
-// Reads `path`: OBJ with the tool's own reader (obj_soup_reader.h), the other formats with
-// CGAL's polygon soup reader; on failure, says what is wrong.
-std::optional<std::string> read_soup(const std::string& path, Soup& soup)
-{
-  std::error_code ec;
-  if(!fs::exists(path, ec))
-    return "no such file";
-  if(!fs::is_regular_file(path, ec))
-    return "not a regular file";
-  if(fs::file_size(path, ec) == 0)
-    return "the file is empty";
-  std::string extension = fs::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if(extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl" && extension != ".ts")
-    return "not a mesh format: " + (extension.empty() ? std::string("no extension") : extension) +
-           " (OFF, OBJ, PLY, STL and GOCAD TS files are read)";
-  const std::string format = extension.substr(1);
-  if(extension == ".obj")
-  {
-    const std::optional<std::string> wrong = np_examples::read_obj_soup(path, soup.points, soup.polygons);
-    if(wrong)
-      return "not a valid obj file: " + *wrong;
-    if(soup.polygons.empty())
-      return "the " + format + " file has no face";
-    return std::nullopt;
-  }
-  if(extension == ".ply")
-    if(const std::optional<std::string> problem = ply_vertex_problem(path))
-      return "not a readable ply file: " + *problem;
-  // The reader says why it failed on the standard streams: keep its first line that names an
-  // error, else its first that is not blank, a progress line ("Parsing ASCII file...") or a
-  // binary STL's header. It throws on some malformed counts.
-  Captured_streams said;
-  bool read = false;
-  try
-  {
-    read = CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons, CGAL::parameters::verbose(true));
-  }
-  catch(const std::bad_alloc&)
-  {
-    return "not a valid " + format + " file: its counts ask for more memory than there is";
-  }
-  catch(const std::length_error&)
-  {
-    return "not a valid " + format + " file: a count is negative or out of range";
-  }
-  catch(const std::exception& e)
-  {
-    return "not a valid " + format + " file: the reader failed (" + first_line(e.what()) + ")";
-  }
-  if(read && !soup.polygons.empty())
-    return std::nullopt;
-  std::istringstream lines(said.text.str());
-  std::string reason, line;
-  while(std::getline(lines, line))
-    if(line.find("rror") != std::string::npos)
-    {
-      reason = line;
-      break;
-    }
-    else if(reason.empty() && line.find_first_not_of(" \t\r") != std::string::npos &&
-            line.compare(0, 7, "Parsing") != 0 && line.compare(0, 7, "header:") != 0)
-      reason = line;
-  if(read || (!soup.points.empty() && soup.polygons.empty() && reason.find("empty") != std::string::npos))
-    return "the " + format + " file has no face";
-  return "not a valid " + format + " file" + (reason.empty() ? std::string() : ": " + reason);
-}
+using np_examples::Output_files;
 
-// The five files the tool writes: their directory and names.
-struct Output_files
+// The uv layout of the faces whose vertices all have a uv.
+std::vector<std::vector<std::array<double, 2> > > uv_layout(const Textured_soup& result)
 {
-  fs::path directory;
-  std::string stem;
-  std::vector<std::string> names;
-};
-
-Output_files output_files(const std::string& basename)
-{
-  const fs::path target = fs::absolute(basename);
-  const std::string stem = target.filename().string();
-  return {target.parent_path(), stem, {stem + ".obj", stem + ".mtl", stem + ".png", stem + "_uv.svg", stem + "_report.txt"}};
-}
-
-// Why the files cannot be written, if that is known before writing them.
-std::optional<std::string> output_problem(const Output_files& files)
-{
-  std::error_code ec;
-  if(!fs::exists(files.directory, ec))
-    return "no such directory: " + files.directory.string();
-  if(!fs::is_directory(files.directory, ec))
-    return "not a directory: " + files.directory.string();
-  for(const std::string& name : files.names)
-    if(fs::is_directory(files.directory / name, ec))
-      return (files.directory / name).string() + " is a directory";
-  return std::nullopt;
-}
-
-// A directory this run created, removed with what it holds when it goes out of scope.
-struct Scratch_directory
-{
-  fs::path path;
-  ~Scratch_directory()
-  {
-    std::error_code ec;
-    if(!path.empty())
-      fs::remove_all(path, ec);
-  }
-};
-
-// Writes every output file into a new scratch directory beside them, then moves them in place
-// (replacing files of the same names): on any failure nothing of this run is left behind, and
-// the reason is returned.
-std::optional<std::string> write_outputs(const Settings& s, const Soup& soup, const UV& uv,
-                                         const std::vector<char>& has_uv, const std::string& report)
-{
-  const Output_files files = output_files(s.output);
-  if(const std::optional<std::string> problem = output_problem(files))
-    return problem;
-  std::error_code ec;
-  Scratch_directory scratch; // stem.partial, or stem.partial.1, ...
-  for(int k = 0; scratch.path.empty(); ++k)
-  {
-    const fs::path candidate =
-      files.directory / (files.stem + ".partial" + (k > 0 ? "." + std::to_string(k) : std::string()));
-    if(fs::create_directory(candidate, ec))
-      scratch.path = candidate;
-    else if((ec && ec != std::errc::file_exists) || k == 100)
-      return "cannot create a directory in " + files.directory.string() + (ec ? ": " + ec.message() : std::string());
-  }
-  std::ofstream text((scratch.path / files.names[4]).string());
-  text << report;
-  text.close();
   std::vector<std::vector<std::array<double, 2> > > layout;
-  for(const Polygon& polygon : soup.polygons)
-    if(polygon.size() > 2 && std::all_of(polygon.begin(), polygon.end(), [&](std::size_t i) { return has_uv[i]; }))
+  for(const Polygon& polygon : result.soup.polygons)
+    if(polygon.size() > 2 && std::all_of(polygon.begin(), polygon.end(), [&](std::size_t i) { return result.has_uv[i]; }))
     {
       layout.emplace_back();
       for(std::size_t i : polygon)
-        layout.back().push_back({uv[i].x(), uv[i].y()});
+        layout.back().push_back({result.uv[i].x(), result.uv[i].y()});
     }
-  if(!text || !np_examples::write_textured_obj((scratch.path / files.stem).string(), soup.points, soup.polygons, uv) ||
-     !np_examples::write_uv_layout_svg((scratch.path / files.names[3]).string(), layout))
-    return "cannot write into " + scratch.path.string();
-  for(std::size_t k = 0; k < files.names.size(); ++k)
-  {
-    fs::rename(scratch.path / files.names[k], files.directory / files.names[k], ec);
-    if(ec)
-    {
-      const std::string reason = "cannot move " + files.names[k] + " into place: " + ec.message();
-      for(std::size_t moved = 0; moved < k; ++moved)
-        fs::remove(files.directory / files.names[moved], ec);
-      return reason;
-    }
-  }
-  return std::nullopt;
+  return layout;
+}
+
+// The files the settings ask for, with their writers, which read `result` and `texture` when
+// np_examples::write_outputs() calls them, once the work has filled `result`.
+Output_files output_files(const Settings& s, const np_examples::Texture_image& texture, const Textured_soup& result)
+{
+  const fs::path target = fs::absolute(s.output);
+  const std::string stem = target.filename().string();
+  Output_files out{target.parent_path(), stem, {}};
+  auto add = [&](const std::string& suffix, std::function<bool(const std::string&)> write) {
+    out.files.push_back({stem + suffix, write});
+  };
+  if(s.format == "obj")
+    out.files = np_examples::textured_obj_files(stem, result.soup.points, result.soup.polygons, result.uv, texture);
+  else
+    add(".glb", [&result](const std::string& path) { return np_examples::write_bytes(path, result.glb); });
+  add("_uv.svg", [&result](const std::string& path) { return np_examples::write_uv_layout_svg(path, uv_layout(result)); });
+  add("_report.txt", [&result](const std::string& path) {
+    std::ofstream text(path);
+    text << result.report;
+    return bool(text);
+  });
+  if(s.viewer)
+    add(".html", [&result, stem](const std::string& path) {
+      return np_examples::write_viewer_page(path, stem, result.glb, NP_THREE_JS_DIR);
+    });
+  return out;
 }
 
 // Says on stderr why the output files cannot be written; the exit status.
-int cannot_write(const Settings& s, const std::string& why)
+int cannot_write(const Output_files& files, const std::string& why)
 {
-  std::cerr << "error: cannot write " << s.output << ".obj/.mtl/.png/_uv.svg/_report.txt: " << why << "; nothing written\n";
+  std::cerr << "error: cannot write " << np_examples::file_list(files) << ": " << why << "; nothing written\n";
   return 1;
+}
+
+// The texture of the settings: their image, checked, or the checkerboard; returns what is wrong
+// with the image, if anything.
+std::optional<std::string> load_texture(const Settings& s, np_examples::Texture_image& texture)
+{
+  if(s.texture_image.empty())
+  {
+    texture = np_examples::checkerboard_texture();
+    return std::nullopt;
+  }
+  return np_examples::read_texture_image(s.texture_image, texture);
+}
+
+// Makes the glb of the textured soup: its faces cut into the triangles the library mapped (its
+// triangulate_polygon_soup()), its faces of two corners as lines; returns why it cannot, if it
+// cannot.
+std::optional<std::string> make_glb(Textured_soup& result, const np_examples::Texture_image& texture,
+                                    const std::string& name)
+{
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<std::array<std::size_t, 2> > edges;
+  SMP::triangulate_polygon_soup(result.soup.points, result.soup.polygons, std::back_inserter(triangles),
+                                std::back_inserter(edges));
+  return np_examples::glb_file(result.soup.points, result.uv, triangles, edges, texture, name, result.glb);
 }
 
 // The tool; main() turns what escapes it (a reader's or the allocator's exception) into exit 1.
@@ -426,58 +375,71 @@ int run(int argc, char** argv)
     std::cout << usage;
     return 0;
   }
-  if(const std::optional<std::string> problem = output_problem(output_files(s.output)))
-    return cannot_write(s, *problem); // known before the work
+  // Everything that can be checked before the work is.
+  np_examples::Texture_image texture;
+  if(const std::optional<std::string> wrong = load_texture(s, texture))
+  {
+    std::cerr << "error: cannot read the texture " << s.texture_image << ": " << *wrong << "; nothing written\n";
+    return 1;
+  }
+  if(s.viewer)
+    if(const std::optional<std::string> wrong = np_examples::viewer_scripts_problem(NP_THREE_JS_DIR))
+    {
+      std::cerr << "error: --viewer: " << *wrong << "; nothing written\n";
+      return 1;
+    }
+  Textured_soup result;
+  const Output_files files = output_files(s, texture, result);
+  if(const std::optional<std::string> problem = np_examples::output_problem(files))
+    return cannot_write(files, *problem);
+  np_examples::Progress_display progress(np_examples::Progress_display::mode_for_stderr(s.quiet), std::cerr.rdbuf(),
+                                         np_examples::Progress_display::delay_from_environment());
 
-  Soup soup;
-  const std::optional<std::string> unread = with_progress("reading " + s.input, [&] { return read_soup(s.input, soup); });
+  Soup& soup = result.soup;
+  const std::optional<std::string> unread =
+    progress.run("reading " + s.input, [&] { return np_examples::read_soup(s.input, soup.points, soup.polygons); });
   if(unread)
   {
     std::cerr << "error: cannot read " << s.input << ": " << *unread << '\n';
     return 1;
   }
 
-  // The library leaves a vertex on no face alone; the OBJ would carry its position as it is.
-  std::vector<char> on_face(soup.points.size(), 0);
-  for(const Polygon& polygon : soup.polygons)
-    for(std::size_t i : polygon)
-      if(i < on_face.size()) // an index out of range is the library's to report
-        on_face[i] = 1;
-  for(std::size_t i = 0; i < soup.points.size(); ++i)
-  {
-    const Point_3& p = soup.points[i];
-    if(!on_face[i] && !(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z())))
+  // The library leaves a vertex on no face alone, and the output files would carry its position
+  // as it is; it refuses a non-finite coordinate on a face itself.
+  if(const auto v = np_examples::first_non_finite_vertex(soup.points, soup.polygons))
+    if(!v->on_face)
     {
-      std::cerr << "error: vertex " << i << " of " << s.input << " is on no face and has a non-finite coordinate\n";
+      std::cerr << "error: vertex " << v->index << " of " << s.input << " is on no face and has a non-finite coordinate\n";
       return 1;
     }
-  }
 
-  // Vertices on no face keep {0, 0}: one vt per v in the OBJ.
-  const Kernel::Point_2 no_uv(std::nan(""), std::nan(""));
-  UV uv(soup.points.size(), no_uv);
+  // The library writes the uv of every vertex on a face; the others keep NaN, no uv, which the
+  // writers write as (0, 0) (vertex_uv.h): one vt per v in the OBJ, one uv per vertex in the glb.
+  UV& uv = result.uv;
+  uv.assign(soup.points.size(), Kernel::Point_2(std::nan(""), std::nan("")));
   SMP::Texture_polygon_mesh_report report;
   if(s.texture.fixed_pair &&
      (s.texture.fixed_pair->first >= soup.points.size() || s.texture.fixed_pair->second >= soup.points.size()))
   {
-    std::cerr << "error: --fixed-pair: the file has " << soup.points.size() << " vertices\n";
+    std::cerr << "error: --fixed-pair: " << s.input << " has " << soup.points.size() << " vertices\n";
     return 1;
   }
-  const SMP::Error_code status = with_progress("texturing " + std::to_string(soup.points.size()) + " vertices", [&] {
+  const SMP::Error_code status = progress.run("texturing " + std::to_string(soup.points.size()) + " vertices", [&] {
     return np_examples::texture_with_settings(soup.points, soup.polygons, CGAL::make_property_map(uv), s.texture, report,
-                                              [](const SMP::Norm_preserving_progress&) { return true; });
+                                              [&](const SMP::Norm_preserving_progress& p) {
+                                                progress.set_fraction(p.fraction);
+                                                return true;
+                                              });
   });
   if(status != SMP::OK)
   {
     std::cerr << "error: " << SMP::norm_preserving_error_message(status) << ": " << report.message << '\n';
     return 1;
   }
-  std::vector<char> has_uv(uv.size());
+  std::vector<char>& has_uv = result.has_uv;
+  has_uv.resize(uv.size());
   for(std::size_t i = 0; i < uv.size(); ++i)
-  {
-    has_uv[i] = !std::isnan(uv[i].x());
-    if(!has_uv[i]) uv[i] = Kernel::Point_2(0, 0);
-  }
+    has_uv[i] = np_examples::has_uv(uv[i]);
 
   std::size_t active = 0, constraints = 0, iterations = 0;
   double initial = 0, kkt = 0;
@@ -526,9 +488,17 @@ int run(int argc, char** argv)
           << "coincident vertices welded: " << report.welded_vertices << '\n'
           << "face corners dropped as repeats: " << report.repeated_corners << '\n'
           << "components of zero extent (mapped to a point): " << report.point_components << '\n';
-  if(const auto unwritten = with_progress("writing " + s.output, [&] { return write_outputs(s, soup, uv, has_uv, details.str()); }))
-    return cannot_write(s, *unwritten);
-  std::cout << summary.str() << "wrote " << s.output << ".obj, .mtl, .png, _uv.svg, _report.txt\n";
+  result.report = details.str();
+  const std::optional<std::string> unwritten = progress.run("writing " + s.output, [&]() -> std::optional<std::string> {
+    if(s.format == "glb" || s.viewer)
+      if(std::optional<std::string> wrong = make_glb(result, texture, files.stem))
+        return wrong;
+    return np_examples::write_outputs(files);
+  });
+  if(unwritten)
+    return cannot_write(files, *unwritten);
+  if(!s.quiet)
+    std::cout << summary.str() << "wrote " << np_examples::file_list(files) << '\n';
   return 0;
 }
 
@@ -544,7 +514,7 @@ int main(int argc, char** argv)
   }
   catch(const std::exception& e)
   {
-    std::cerr << "error: " << first_line(e.what()) << "; nothing written\n";
+    std::cerr << "error: " << np_examples::first_line(e.what()) << "; nothing written\n";
   }
   catch(...)
   {

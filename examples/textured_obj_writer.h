@@ -1,111 +1,51 @@
-// Writes a mesh with per-vertex uvs as an OBJ with `vt` lines, its MTL, and a checkerboard
-// PNG texture, so that any viewer (MeshLab, Blender) shows the texture on the model.
+// Writes a mesh with per-vertex uvs as an OBJ with `vt` lines and its MTL, whose material's
+// texture is an image file beside them, so that any viewer (MeshLab, Blender) shows the texture
+// on the model: the one writer of the command-line tool and of the Python module's write_obj().
 
 #ifndef NP_EXAMPLES_TEXTURED_OBJ_WRITER_H
 #define NP_EXAMPLES_TEXTURED_OBJ_WRITER_H
 
+#include "image_file.h"
+#include "output_files.h"
+#include "vertex_uv.h"
+
 #include <array>
-#include <cstdint>
+#include <cmath>
+#include <cstddef>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace np_examples {
 
-inline std::uint32_t crc32(const std::uint8_t* data, std::size_t size, std::uint32_t crc = 0)
+// Writes the material library `path`: one material, "texture", whose diffuse map is the image
+// file `image_name` (relative to the MTL file).
+inline bool write_texture_mtl(const std::string& path, const std::string& image_name)
 {
-  crc = ~crc;
-  for(std::size_t i = 0; i < size; ++i)
-  {
-    crc ^= data[i];
-    for(int k = 0; k < 8; ++k)
-      crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-  }
-  return ~crc;
+  std::ofstream mtl(path);
+  mtl << "newmtl texture\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nmap_Kd " << image_name << '\n';
+  return bool(mtl);
 }
 
-inline void append_u32(std::vector<std::uint8_t>& out, std::uint32_t value)
-{
-  for(int shift = 24; shift >= 0; shift -= 8)
-    out.push_back(std::uint8_t(value >> shift));
-}
-
-inline void append_chunk(std::vector<std::uint8_t>& png, const char* type, const std::vector<std::uint8_t>& data)
-{
-  append_u32(png, std::uint32_t(data.size()));
-  const std::size_t start = png.size();
-  png.insert(png.end(), type, type + 4);
-  png.insert(png.end(), data.begin(), data.end());
-  append_u32(png, crc32(png.data() + start, png.size() - start));
-}
-
-// An RGB PNG with uncompressed (stored) deflate blocks: no zlib needed.
-inline bool write_png(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb)
-{
-  std::vector<std::uint8_t> raw;
-  for(int y = 0; y < height; ++y)
-  {
-    raw.push_back(0); // filter: none
-    raw.insert(raw.end(), rgb.begin() + std::ptrdiff_t(3) * width * y, rgb.begin() + std::ptrdiff_t(3) * width * (y + 1));
-  }
-  std::vector<std::uint8_t> zlib = {0x78, 0x01};
-  for(std::size_t pos = 0; pos < raw.size() || pos == 0; pos += 65535)
-  {
-    const std::size_t size = std::min<std::size_t>(65535, raw.size() - pos);
-    zlib.push_back(pos + size == raw.size() ? 1 : 0);
-    zlib.push_back(std::uint8_t(size & 0xFF)); zlib.push_back(std::uint8_t(size >> 8));
-    zlib.push_back(std::uint8_t(~size & 0xFF)); zlib.push_back(std::uint8_t((~size >> 8) & 0xFF));
-    zlib.insert(zlib.end(), raw.begin() + std::ptrdiff_t(pos), raw.begin() + std::ptrdiff_t(pos + size));
-    if(size == 0) break;
-  }
-  std::uint32_t a = 1, b = 0;
-  for(std::uint8_t byte : raw) { a = (a + byte) % 65521; b = (b + a) % 65521; }
-  append_u32(zlib, (b << 16) | a);
-
-  std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  std::vector<std::uint8_t> header;
-  append_u32(header, std::uint32_t(width));
-  append_u32(header, std::uint32_t(height));
-  header.insert(header.end(), {8, 2, 0, 0, 0}); // 8-bit RGB, no interlace
-  append_chunk(png, "IHDR", header);
-  append_chunk(png, "IDAT", zlib);
-  append_chunk(png, "IEND", {});
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
-  return bool(out);
-}
-
-inline bool write_checkerboard_png(const std::string& path, int size = 512, int squares = 8)
-{
-  std::vector<std::uint8_t> rgb(std::size_t(3) * size * size);
-  for(int y = 0; y < size; ++y)
-    for(int x = 0; x < size; ++x)
-    {
-      const bool dark = ((x * squares / size) + (y * squares / size)) % 2 == 1;
-      const std::array<std::uint8_t, 3> color = dark ? std::array<std::uint8_t, 3>{40, 60, 140}
-                                                     : std::array<std::uint8_t, 3>{235, 225, 200};
-      std::copy(color.begin(), color.end(), rgb.begin() + 3 * (std::ptrdiff_t(y) * size + x));
-    }
-  return write_png(path, size, size, rgb);
-}
-
-// Writes `basename`.obj, `basename`.mtl and `basename`.png: the soup's vertices in their
-// order, one `vt` per vertex from `uv` (2D points, one per vertex), and its faces as
-// they are (a face of two vertices as a line).
+// Writes the OBJ file `path`, using the material of the library `mtl_name` (relative to the
+// OBJ file): the soup's vertices in their order (17 digits: the doubles themselves), one `vt`
+// per vertex from `uv` (2D points, one per vertex; written_uv() of each), and its faces as they
+// are (a face of two vertices as a line, a face of one skipped).
 template <typename PointRange, typename PolygonRange, typename UVRange>
-bool write_textured_obj(const std::string& basename, const PointRange& points, const PolygonRange& polygons,
-                        const UVRange& uv)
+bool write_textured_obj(const std::string& path, const std::string& mtl_name, const PointRange& points,
+                        const PolygonRange& polygons, const UVRange& uv)
 {
-  const std::string stem = basename.substr(basename.find_last_of('/') + 1);
-  std::ofstream mtl(basename + ".mtl");
-  mtl << "newmtl checkerboard\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nmap_Kd " << stem << ".png\n";
-  std::ofstream obj(basename + ".obj");
+  std::ofstream obj(path);
   obj.precision(17);
-  obj << "mtllib " << stem << ".mtl\nusemtl checkerboard\n";
+  obj << "mtllib " << mtl_name << "\nusemtl texture\n";
   for(const auto& p : points)
     obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
   for(const auto& t : uv)
-    obj << "vt " << t.x() << ' ' << t.y() << '\n';
+  {
+    const std::array<double, 2> written = written_uv(t);
+    obj << "vt " << written[0] << ' ' << written[1] << '\n';
+  }
   for(const auto& polygon : polygons)
   {
     if(polygon.size() < 2)
@@ -115,7 +55,58 @@ bool write_textured_obj(const std::string& basename, const PointRange& points, c
       obj << ' ' << i + 1 << '/' << i + 1;
     obj << '\n';
   }
-  return bool(obj) && bool(mtl) && write_checkerboard_png(basename + ".png");
+  return bool(obj);
+}
+
+// A vertex with a non-finite coordinate, and whether it is on a face.
+struct Non_finite_vertex
+{
+  std::size_t index;
+  bool on_face;
+};
+
+// The first vertex of the soup with a non-finite coordinate, if any: an OBJ would carry it as it
+// is ("nan"), which other readers refuse. (A vertex on a face is refused by the package's calls
+// too; one on no face only by the writers.) Indices out of range are skipped.
+template <typename PointRange, typename PolygonRange>
+std::optional<Non_finite_vertex> first_non_finite_vertex(const PointRange& points, const PolygonRange& polygons)
+{
+  std::vector<char> on_face(points.size(), 0);
+  for(const auto& polygon : polygons)
+    for(std::size_t i : polygon)
+      if(i < on_face.size())
+        on_face[i] = 1;
+  std::size_t i = 0;
+  for(const auto& p : points)
+  {
+    if(!(std::isfinite(double(p.x())) && std::isfinite(double(p.y())) && std::isfinite(double(p.z()))))
+      return Non_finite_vertex{i, on_face[i] != 0};
+    ++i;
+  }
+  return std::nullopt;
+}
+
+// "vertex 3 is on no face and has a non-finite coordinate"
+inline std::string non_finite_vertex_message(const Non_finite_vertex& v)
+{
+  return "vertex " + std::to_string(v.index) + (v.on_face ? "" : " is on no face and") + " has a non-finite coordinate";
+}
+
+// The files of a textured OBJ named `stem`, for write_outputs(): stem.obj, stem.mtl and the
+// texture image stem.png or stem.jpg. They read the soup, the uvs and the image when written:
+// these must outlive the writing.
+template <typename PointRange, typename PolygonRange, typename UVRange>
+std::vector<Output_file> textured_obj_files(const std::string& stem, const PointRange& points,
+                                            const PolygonRange& polygons, const UVRange& uv,
+                                            const Texture_image& texture)
+{
+  return {{stem + ".obj",
+           [&points, &polygons, &uv, stem](const std::string& path) {
+             return write_textured_obj(path, stem + ".mtl", points, polygons, uv);
+           }},
+          {stem + ".mtl",
+           [image = stem + texture.extension](const std::string& path) { return write_texture_mtl(path, image); }},
+          {stem + texture.extension, [&texture](const std::string& path) { return write_bytes(path, texture.bytes); }}};
 }
 
 } // namespace np_examples
