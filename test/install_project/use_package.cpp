@@ -28,7 +28,11 @@ int main()
   for(auto v : vertices(mesh))
     inside += get(uv, v).x() >= 0 && get(uv, v).x() <= 1 && get(uv, v).y() >= 0 && get(uv, v).y() <= 1;
   std::cout << "installed package: " << inside << " of " << num_vertices(mesh) << " uvs in [0,1]^2\n"
-            << "built with CGAL " << CGAL_VERSION_STR << ", Eigen " << EIGEN_WORLD_VERSION << '.' << EIGEN_MAJOR_VERSION << '.'
-            << EIGEN_MINOR_VERSION << '\n';
+            << "built with CGAL " << CGAL_VERSION_STR << ", Eigen "
+#ifdef EIGEN_PATCH_VERSION // Eigen 5 keeps EIGEN_WORLD_VERSION at 3 and counts its release from EIGEN_MAJOR_VERSION on
+            << EIGEN_MAJOR_VERSION << '.' << EIGEN_MINOR_VERSION << '.' << EIGEN_PATCH_VERSION << '\n';
+#else
+            << EIGEN_WORLD_VERSION << '.' << EIGEN_MAJOR_VERSION << '.' << EIGEN_MINOR_VERSION << '\n';
+#endif
   return inside == num_vertices(mesh) ? 0 : 1;
 }
