@@ -18,7 +18,8 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detec
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # install_and_use, doxygen_reference and the guides' snippets hold no code of ours to sanitize that
 # the suite does not run; the other examples and the client tests' programs are not built; the
-# accuracy suite repeats under the sanitizers, many times slower, solves the suite already runs.
+# accuracy suite repeats under the sanitizers, many times slower, solves the suite already runs;
+# the large Klein bottle (over 2 minutes here) runs the code of the large Moebius strip, which stays.
 ctest --test-dir "$dir" --output-on-failure -j2 \
-      -E "install_and_use|doxygen_reference|guide_snippets|Accuracy|example_(simple_parameterization|closed_mesh|polygon_mesh|seam_mesh|custom_mesh|initial_guess_and_solver|compare_with_lscm_arap)|texture_mesh_(outputs|viewer|glb|ply_strips)|blender|python"
+      -E "install_and_use|doxygen_reference|guide_snippets|Accuracy|LargeIsTextured/klein_bottle|example_(simple_parameterization|closed_mesh|polygon_mesh|seam_mesh|custom_mesh|initial_guess_and_solver|compare_with_lscm_arap)|texture_mesh_(outputs|viewer|glb|ply_strips)|blender|python"
 echo "sanitizer tests: $((SECONDS - start)) s"

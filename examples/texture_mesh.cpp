@@ -92,7 +92,7 @@ const char* const usage =
   "  --fixed-pair A,B              fix the edge between input vertices A and B (0-based);\n"
   "                                default: an automatic pair in every component\n"
   "  --quality draft|default|exact how close to the optimum the solver goes (default: default;\n"
-  "                                draft: about 1% above, fastest; exact: certified to 1e-9)\n"
+  "                                draft: at most 2% above, fastest; exact: certified to 1e-9)\n"
   "  --tolerance T                 the solver's tolerance (default: the quality's)\n"
   "  --time-limit S                stop the solver after S seconds with its best point\n"
   "                                (default inf: no limit)\n"

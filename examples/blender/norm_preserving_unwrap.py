@@ -62,7 +62,7 @@ class UV_OT_norm_preserving_unwrap(bpy.types.Operator):
                                    description="Then minimize the Euclidean edge-length error", default=False)
     quality: EnumProperty(
         name="Quality",
-        items=[("draft", "Draft", "About 1% above the optimum, fastest"),
+        items=[("draft", "Draft", "At most 2% above the optimum, fastest"),
                ("default", "Default", "Close to the optimum"),
                ("exact", "Exact", "The optimum, certified to 1e-9")],
         default="default")

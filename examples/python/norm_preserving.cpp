@@ -1000,7 +1000,7 @@ fixed_pair : (a, b), two vertices of an edge held at its length; None: automatic
 keep_coincident : do not weld the vertices at the same position.
 refine_signs : re-solve with the signs of the solution (at most 10 rounds).
 refine_euclidean : then minimize the Euclidean edge-length error (at most 1000 steps).
-quality : 'draft' (about 1% above the optimum), 'default' or 'exact' (certified to 1e-9).
+quality : 'draft' (at most 2% above the optimum), 'default' or 'exact' (certified to 1e-9).
 tolerance : the solver's tolerance; None: the quality's.
 time_limit : seconds after which the solver returns its best point (its SolveReport.message
     says so); None: no limit.
