@@ -297,8 +297,8 @@ TEST(NamedParameters, AreReadHoweverTheyAreGiven)
 // within `draft_excess`. On the triangle meshes of the suite, the parameterizer (with the
 // automatic pair the whole-soup call takes) gives the same objective bit for bit, and so the
 // same excess; the command-line tool gives the whole-soup call's uvs bit for bit
-// (examples/cli_tests, texture_mesh_same_bits).
-constexpr double default_excess = 1e-4, draft_excess = 2e-2; // doc/manual.md, "Accuracy"
+// (the test same_bits_on_every_way_in of examples/).
+constexpr double default_excess = 1e-4, draft_excess = 2e-2; // doc/manual.md, "Quality presets"
 
 struct Soup_of
 {

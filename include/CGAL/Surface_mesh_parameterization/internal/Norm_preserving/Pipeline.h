@@ -4,7 +4,7 @@
 // The method on one connected component given as vertices and edges, shared by the
 // parameterizer (a component of a halfedge mesh) and the whole-soup calls (a component of the
 // edge graph of a polygon soup): normalize, guess, fixed pair + similarity, solve, refine,
-// fit. Nothing here needs faces: Eq. 4 is a sum over edges (doc/decisions.md, "Input").
+// fit. Nothing here needs faces: Eq. 4 is a sum over edges (doc/decisions.md, "Input and triangulation").
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PIPELINE_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PIPELINE_H

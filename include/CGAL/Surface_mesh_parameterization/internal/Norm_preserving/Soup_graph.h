@@ -6,7 +6,7 @@
 // edges and vertices, inconsistent orientation, non-orientable surfaces, duplicate faces,
 // repeated corners). Coincident vertices are welded (optionally), every polygon is triangulated
 // on its own (paper step 1), the unique edges of the triangles are the graph, and its
-// connected components are the pieces the pipeline maps (doc/decisions.md, "Input").
+// connected components are the pieces the pipeline maps (doc/decisions.md, "Input and triangulation").
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SOUP_GRAPH_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SOUP_GRAPH_H
