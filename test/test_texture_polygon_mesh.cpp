@@ -19,12 +19,18 @@
 #include <tbb/task_arena.h>
 #endif
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -296,8 +302,8 @@ TEST(NamedParameters, AreReadHoweverTheyAreGiven)
 // `default_excess` of the optimum that its exact mode certifies on the same call, and its draft
 // within `draft_excess`. On the triangle meshes of the suite, the parameterizer (with the
 // automatic pair the whole-soup call takes) gives the same objective bit for bit, and so the
-// same excess; the command-line tool gives the whole-soup call's uvs bit for bit
-// (the test same_bits_on_every_way_in of examples/).
+// same excess; the command-line tool, given the same soup as an OFF file, gives the whole-soup
+// call's uvs of each preset bit for bit, and so the same excess.
 constexpr double default_excess = 1e-4, draft_excess = 2e-2; // doc/manual.md, "Quality presets"
 
 struct Soup_of
@@ -319,6 +325,39 @@ Soup_of soup_of(const std::string& spec)
   soup.triangle_mesh = CGAL::is_triangle_mesh(mesh);
   return soup;
 }
+
+#ifdef NP_TEXTURE_MESH
+// The uvs of the command-line tool (NP_TEXTURE_MESH) at `quality` on `soup`, written as an OFF
+// file whose coordinates round-trip, read back from the vt lines of the tool's OBJ (which round-trip
+// too), one per vertex in order; empty if the tool fails.
+std::vector<Point_2> tool_uvs(const Soup_of& soup, const std::string& name, const std::string& quality)
+{
+  const std::filesystem::path dir =
+    std::filesystem::path(::testing::TempDir()) / ("np_accuracy_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string off = (dir / "in.off").string(), obj = (dir / (quality + ".obj")).string();
+  std::vector<Point_2> uv;
+  if(CGAL::IO::write_polygon_soup(off, soup.points, soup.polygons, CGAL::parameters::stream_precision(17)))
+  {
+    const std::string command =
+      std::string("\"") + NP_TEXTURE_MESH + "\" --quiet --quality " + quality + " \"" + off + "\" \"" + obj + "\"";
+    if(std::system(command.c_str()) == 0)
+    {
+      std::ifstream in(obj);
+      for(std::string line; std::getline(in, line);)
+        if(line.compare(0, 3, "vt ") == 0)
+        {
+          std::istringstream words(line.substr(3));
+          double u = 0, v = 0;
+          words >> u >> v;
+          uv.emplace_back(u, v);
+        }
+    }
+  }
+  std::filesystem::remove_all(dir);
+  return uv;
+}
+#endif
 
 class Accuracy : public ::testing::TestWithParam<std::string> { };
 
@@ -345,6 +384,21 @@ TEST_P(Accuracy, EachPresetIsWithinItsStatedDistanceOfTheOptimum)
                                                                    << run->report.objective / optimum - 1;
     EXPECT_LE(run->report.objective, optimum * (1 + run->report.optimality_gap) * (1 + 1e-9) + tiny); // its certificate
   }
+#ifdef NP_TEXTURE_MESH
+  std::string name = GetParam();
+  std::replace(name.begin(), name.end(), '*', 'x');
+  for(const auto& [run, quality] : {std::make_pair(&fine, "default"), std::make_pair(&draft, "draft")})
+  {
+    const std::vector<Point_2> tool = tool_uvs(soup, name, quality);
+    ASSERT_EQ(tool.size(), run->uv.size()) << "texture_mesh --quality " << quality << " failed";
+    std::size_t differing = 0;
+    for(std::size_t i = 0; i < tool.size(); ++i) // the tool writes vt 0 0 for a vertex on no face
+      differing += tool[i] != (run->uv[i] == np_test::sentinel ? Point_2(0, 0) : run->uv[i]);
+    EXPECT_EQ(differing, 0u) << "the tool's uvs at " << quality << " quality differ from the whole-soup call's";
+  }
+#else
+  ADD_FAILURE() << "texture_mesh is not built (it needs libpng-dev and libjpeg-dev): its accuracy is not checked";
+#endif
   if(!soup.triangle_mesh)
     return;
   Mesh mesh;
