@@ -1,5 +1,6 @@
 // texture_polygon_mesh: polygon meshes of any topology and several components in one call.
 
+#include "obj_uvs.h"
 #include "test_runs.h"
 
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
@@ -26,11 +27,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <numeric>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -327,35 +326,16 @@ Soup_of soup_of(const std::string& spec)
 }
 
 #ifdef NP_TEXTURE_MESH
-// The uvs of the command-line tool (NP_TEXTURE_MESH) at `quality` on `soup`, written as an OFF
-// file whose coordinates round-trip, read back from the vt lines of the tool's OBJ (which round-trip
-// too), one per vertex in order; empty if the tool fails.
-std::vector<Point_2> tool_uvs(const Soup_of& soup, const std::string& name, const std::string& quality)
+// The uvs of the command-line tool (NP_TEXTURE_MESH) at `quality` on the OFF file `off`, read back
+// from its OBJ, written beside `off`; empty if the tool fails.
+std::vector<std::array<double, 2> > tool_uvs(const std::filesystem::path& off, const std::string& quality)
 {
-  const std::filesystem::path dir =
-    std::filesystem::path(::testing::TempDir()) / ("np_accuracy_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const std::string off = (dir / "in.off").string(), obj = (dir / (quality + ".obj")).string();
-  std::vector<Point_2> uv;
-  if(CGAL::IO::write_polygon_soup(off, soup.points, soup.polygons, CGAL::parameters::stream_precision(17)))
-  {
-    const std::string command =
-      std::string("\"") + NP_TEXTURE_MESH + "\" --quiet --quality " + quality + " \"" + off + "\" \"" + obj + "\"";
-    if(std::system(command.c_str()) == 0)
-    {
-      std::ifstream in(obj);
-      for(std::string line; std::getline(in, line);)
-        if(line.compare(0, 3, "vt ") == 0)
-        {
-          std::istringstream words(line.substr(3));
-          double u = 0, v = 0;
-          words >> u >> v;
-          uv.emplace_back(u, v);
-        }
-    }
-  }
-  std::filesystem::remove_all(dir);
-  return uv;
+  const std::filesystem::path obj = off.parent_path() / (quality + ".obj");
+  const std::string command = std::string("\"") + NP_TEXTURE_MESH + "\" --quiet --quality " + quality + " \"" +
+                              off.string() + "\" \"" + obj.string() + "\"";
+  if(std::system(command.c_str()) != 0)
+    return {};
+  return np_test::read_obj_uvs(obj.string());
 }
 #endif
 
@@ -385,17 +365,27 @@ TEST_P(Accuracy, EachPresetIsWithinItsStatedDistanceOfTheOptimum)
     EXPECT_LE(run->report.objective, optimum * (1 + run->report.optimality_gap) * (1 + 1e-9) + tiny); // its certificate
   }
 #ifdef NP_TEXTURE_MESH
+  // The tool on the same soup, written once as an OFF file whose coordinates round-trip.
   std::string name = GetParam();
   std::replace(name.begin(), name.end(), '*', 'x');
+  const std::filesystem::path dir =
+    std::filesystem::path(::testing::TempDir()) / ("np_accuracy_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path off = dir / "in.off";
+  ASSERT_TRUE(CGAL::IO::write_polygon_soup(off.string(), soup.points, soup.polygons, CGAL::parameters::stream_precision(17)));
   for(const auto& [run, quality] : {std::make_pair(&fine, "default"), std::make_pair(&draft, "draft")})
   {
-    const std::vector<Point_2> tool = tool_uvs(soup, name, quality);
+    const std::vector<std::array<double, 2> > tool = tool_uvs(off, quality);
     ASSERT_EQ(tool.size(), run->uv.size()) << "texture_mesh --quality " << quality << " failed";
     std::size_t differing = 0;
     for(std::size_t i = 0; i < tool.size(); ++i) // the tool writes vt 0 0 for a vertex on no face
-      differing += tool[i] != (run->uv[i] == np_test::sentinel ? Point_2(0, 0) : run->uv[i]);
+    {
+      const Point_2 expected = run->uv[i] == np_test::sentinel ? Point_2(0, 0) : run->uv[i];
+      differing += tool[i][0] != expected.x() || tool[i][1] != expected.y();
+    }
     EXPECT_EQ(differing, 0u) << "the tool's uvs at " << quality << " quality differ from the whole-soup call's";
   }
+  std::filesystem::remove_all(dir);
 #else
   ADD_FAILURE() << "texture_mesh is not built (it needs libpng-dev and libjpeg-dev): its accuracy is not checked";
 #endif

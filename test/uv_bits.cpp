@@ -21,14 +21,15 @@
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 #include <CGAL/property_map.h>
 
+#include "obj_uvs.h"
 #include "texture_settings.h"
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -158,18 +159,12 @@ int main(int argc, char** argv)
 
   if(!obj.empty())
   {
-    std::ifstream in(obj);
     Hash tool;
-    std::string line;
-    while(std::getline(in, line))
-      if(line.compare(0, 3, "vt ") == 0)
-      {
-        std::istringstream words(line.substr(3));
-        double u = 0, v = 0;
-        words >> u >> v;
-        tool.add(u);
-        tool.add(v);
-      }
+    for(const std::array<double, 2>& p : np_test::read_obj_uvs(obj))
+    {
+      tool.add(p[0]);
+      tool.add(p[1]);
+    }
     print("tool", tool);
   }
   return 0;
