@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 dir=${NP_FUZZ_DIR:-build-fuzz}
 start=$SECONDS
 cmake -S . -B "$dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
-      -DNP_BUILD_TESTS=OFF -DNP_BUILD_EXAMPLES=OFF -DNP_BUILD_BENCHMARKS=OFF -DNP_BUILD_PYTHON=OFF -DNP_BUILD_FUZZER=ON
+      -DNP_BUILD_TESTS=OFF -DNP_BUILD_EXAMPLES=OFF -DNP_BUILD_TOOLS=OFF -DNP_BUILD_BENCHMARKS=OFF -DNP_BUILD_PYTHON=OFF -DNP_BUILD_FUZZER=ON
 cmake --build "$dir" -j"${NP_JOBS:-2}" --target fuzz_texture_off
 echo "fuzzer build: $((SECONDS - start)) s"
 cd "$dir/fuzz"

@@ -34,7 +34,7 @@ int main(int argc, char** argv)
   auto uvmap = mesh.add_property_map<vertex_descriptor, Kernel::Point_2>("v:uv").first;
   SMP::Texture_polygon_mesh_report report;
   // The texture repeats twice along u and twice along v.
-  if(SMP::texture_polygon_mesh(mesh, uvmap, SMP::parameters::tiling(2, 2).report(report)) != SMP::OK)
+  if(SMP::texture_polygon_mesh(mesh, uvmap, SMP::parameters::tiling(2, 2).combine(SMP::parameters::report(report))) != SMP::OK)
   {
     std::cerr << "error: " << report.message << '\n';
     return 1;

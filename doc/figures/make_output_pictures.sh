@@ -37,7 +37,7 @@ PYTHON
 blender -b --factory-startup --python-exit-code 1 --python exr_to_jpeg.py -- \
   /usr/share/blender/datafiles/studiolights/world/forest.exr "$work/forest.jpg" >blender.log 2>&1
 
-tool=$build/examples/texture_mesh
+tool=$build/bin/texture_mesh
 cow=$build/data/meshes/cow.off
 "$tool" --quiet "$cow" cow --viewer
 "$tool" --quiet "$cow" cow_photo.glb --texture forest.jpg --viewer

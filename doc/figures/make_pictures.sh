@@ -35,7 +35,7 @@ for entry in "${views[@]}"; do
   for method in ours lscm arap; do
     name=${mesh}_$method
     # shellcheck disable=SC2086 # $view is a list of options
-    "$build/examples/render_pictures" "$build/data/meshes/$mesh.off" "$method" \
+    "$build/tools/render_pictures/render_pictures" "$build/data/meshes/$mesh.off" "$method" \
       "$scenes/$name.pov" "$figures/${name}_uv.svg" $view
     if ! povray +I"$scenes/$name.pov" +O"$figures/$name.png" +W640 +H480 +A0.3 -D >"$scenes/$name.log" 2>&1; then
       cat "$scenes/$name.log" >&2

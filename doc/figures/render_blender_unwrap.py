@@ -3,7 +3,7 @@ Edit Mode > UV > Norm-preserving unwrap, with a checkerboard on the UV map. Run 
 Xvfb for Blender's OpenGL renderer (Workbench):
 
     xvfb-run -a blender -b --factory-startup --python doc/figures/render_blender_unwrap.py -- \
-        build/examples/python examples/blender/norm_preserving_unwrap.py build/data/meshes/cow.off \
+        build/python blender/norm_preserving_unwrap.py build/data/meshes/cow.off \
         doc/figures/blender_unwrap.png
 """
 

@@ -1,10 +1,10 @@
 # The command-line tool's contract, run by ctest as
 #   cmake -DTOOL=<texture_mesh> -DPROBE=<image_probe> -DMESHES=<mesh dir> -DWORK=<scratch dir>
-#         -DPHOTO_COLOURS=<R,G,B;R,G,B> -DPYTHON=<python3> -DMESH_SCRIPT=<cli_tests/test_meshes.py>
+#         -DPHOTO_COLOURS=<R,G,B;R,G,B> -DPYTHON=<python3> -DMESH_SCRIPT=<test_meshes.py>
 #         -P check_cli.cmake
 # every input format, the options, --help, and clear failures that write nothing.
 
-include(${CMAKE_CURRENT_LIST_DIR}/cli_tests/run.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/run.cmake)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 

@@ -1,7 +1,7 @@
-"""The Blender add-on (examples/blender/norm_preserving_unwrap.py) in a real Blender, headless:
+"""The Blender add-on (blender/norm_preserving_unwrap.py) in a real Blender, headless:
 
     blender -b --factory-startup --python-exit-code 1 --python blender_addon_check.py -- \
-        <directory of the module> <add-on> <cow.off> <scratch directory> <examples/cli_tests/test_meshes.py>
+        <directory of the module> <add-on> <cow.off> <scratch directory> <tools/texture_mesh/test/test_meshes.py>
 
 installs and enables the add-on, imports the cow through Blender's OBJ importer (an OBJ written
 by test_meshes.py's write_obj()), unwraps it in edit mode, and checks the UV map: one uv per

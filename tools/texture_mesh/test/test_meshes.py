@@ -1,6 +1,6 @@
 """Meshes for the command-line tool's tests, made at test time from a triangle mesh in OFF (CGAL's
 cow), and checks of what the tool read from them and wrote. Run by Debian's /usr/bin/python3
-(and imported by test/python/blender_addon_check.py for write_obj()):
+(and imported by blender/test/blender_addon_check.py for write_obj()):
 
   test_meshes.py strips IN.off OUT.ply FORMAT
       IN's triangles as triangle strips, the way many of Stanford's scans store their faces:

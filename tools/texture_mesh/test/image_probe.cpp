@@ -13,8 +13,8 @@
 //   image_probe write-png FILE W H          writes a PNG of W x H pixels of the same cells in
 //                                           the checkerboard's colours
 
-#include "../checkerboard.h"
-#include "../texture_image.h"
+#include "checkerboard.h"
+#include "texture_image.h"
 
 #include <algorithm>
 #include <cmath>

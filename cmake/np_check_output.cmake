@@ -1,5 +1,5 @@
-# Runs one example, as ctest does with
-#   cmake -DPROGRAM=<example> -DEXPECTED=<file holding a regular expression> -P check_example.cmake
+# Runs one program, as ctest does with
+#   cmake -DPROGRAM=<example> -DEXPECTED=<file holding a regular expression> -P np_check_output.cmake
 # and fails unless it exits with 0 and its output matches the expression.
 execute_process(COMMAND "${PROGRAM}" RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 file(READ "${EXPECTED}" expected)

@@ -1,8 +1,9 @@
 // The Python module norm_preserving: the package's whole-soup call on NumPy arrays, with the
-// options of the command-line tool (examples/texture_settings.h: one definition of their names,
+// options of the command-line tool (tools/texture_mesh/texture_settings.h: one definition of their names,
 // defaults and ranges), CGAL's LSCM and ARAP on the mesh cut to a disk, the distortion measures
 // and the command-line tool's mesh reader and textured OBJ writer (soup_reader.h,
-// textured_obj_writer.h). The user's guide is doc/python.md; the types, norm_preserving.pyi.
+// textured_obj_writer.h). The user's guide is doc/manual.md, section 7 (Python); the types,
+// norm_preserving.pyi.
 //
 // The caller's arrays are read in place, never written, and kept alive by the call: the package
 // makes its own copy of the soup, and the module adds none. Everything the module can check is
@@ -14,11 +15,11 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include "../checkerboard.h"
-#include "../output_files.h"
-#include "../soup_reader.h"
-#include "../texture_settings.h"
-#include "../textured_obj_writer.h"
+#include "checkerboard.h"
+#include "output_files.h"
+#include "soup_reader.h"
+#include "texture_settings.h"
+#include "textured_obj_writer.h"
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -973,7 +974,7 @@ Every vertex of any polygon soup gets one uv, with no cut and no seam:
 vertices: an (n, 3) array of numbers; faces: an (m, k) integer array, or a sequence of index
 sequences for polygons of mixed sizes. Also: measure_distortion(), CGAL's lscm() and arap() on
 the mesh cut to a disk, read_mesh() and write_obj(). The caller's arrays are read, never
-written. The user's guide: doc/python.md.)doc";
+written. The user's guide: doc/manual.md, section 7 (Python).)doc";
 
   bind_reports(m);
 

@@ -90,17 +90,15 @@ SMP::Error_code texture_with_settings(const PointRange& points, const PolygonRan
                                       const Progress& progress)
 {
   auto call = [&](auto guess) {
-    const auto np = SMP::parameters::initial_guess(guess)
-                      .solver(settings_solver(s))
-                      .texture_fit(*fit_named(s.fit))
-                      .tiling(s.tiles_u, s.tiles_v)
-                      .sign_refinement(s.refine_signs ? sign_refinement_rounds : 0)
-                      .euclidean_refinement(s.refine_euclidean ? euclidean_refinement_steps : 0)
-                      .weld_coincident_vertices(!s.keep_coincident)
-                      .report(report)
-                      .progress(progress);
+    namespace P = SMP::parameters;
+    const auto np = P::initial_guess(guess).combine(
+      P::solver(settings_solver(s)), P::texture_fit(*fit_named(s.fit)), P::tiling(s.tiles_u, s.tiles_v),
+      P::sign_refinement(s.refine_signs ? sign_refinement_rounds : 0),
+      P::euclidean_refinement(s.refine_euclidean ? euclidean_refinement_steps : 0),
+      P::weld_coincident_vertices(!s.keep_coincident), P::report(report), P::progress(progress));
     if(s.fixed_pair)
-      return SMP::texture_polygon_soup(points, polygons, uvmap, np.fixed_pair(s.fixed_pair->first, s.fixed_pair->second));
+      return SMP::texture_polygon_soup(points, polygons, uvmap,
+                                       np.combine(P::fixed_pair(s.fixed_pair->first, s.fixed_pair->second)));
     return SMP::texture_polygon_soup(points, polygons, uvmap, np);
   };
   if(s.guess == "combination") return call(SMP::Combination_initial_guess());

@@ -6,7 +6,8 @@ uv per vertex and no seam: a closed mesh of any genus, with holes or in pieces, 
 is. One object at a time: with several objects in edit mode it reports an error and changes
 nothing. It
 calls the Python module norm_preserving, which must be installed for Blender's Python (on
-Debian, `cmake --install` of the package puts it where Debian's blender finds it): doc/python.md.
+Debian, `cmake --install` of the package puts it where Debian's blender finds it): doc/manual.md,
+section 8 (Blender).
 """
 
 bl_info = {
@@ -34,7 +35,7 @@ class UV_OT_norm_preserving_unwrap(bpy.types.Operator):
     bl_label = "Norm-preserving unwrap"
     bl_options = {"REGISTER", "UNDO"}
 
-    # The options of norm_preserving.texture(), by its names (doc/python.md).
+    # The options of norm_preserving.texture(), by its names (doc/manual.md, section 7 (Python)).
     guess: EnumProperty(
         name="Initial guess",
         description="The initial map, which sets the signs of the uv differences",
@@ -84,7 +85,7 @@ class UV_OT_norm_preserving_unwrap(bpy.types.Operator):
         try:
             import norm_preserving
         except ImportError as e:
-            self.report({"ERROR"}, f"Norm-preserving unwrap needs the Python module norm_preserving ({e}): see doc/python.md")
+            self.report({"ERROR"}, f"Norm-preserving unwrap needs the Python module norm_preserving ({e}): see doc/manual.md, section 8 (Blender)")
             return {"CANCELLED"}
         mesh = context.active_object.data
         bm = bmesh.from_edit_mesh(mesh)

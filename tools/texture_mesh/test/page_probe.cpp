@@ -3,7 +3,7 @@
 //   page_probe THREE_DIRECTORY OUT.html
 // The model is a few bytes, not a glb: the test reads the page, it does not show it.
 
-#include "../viewer_page.h"
+#include "viewer_page.h"
 
 #include <iostream>
 #include <string>
