@@ -147,7 +147,7 @@ static Textured_soup texture(const Triangle_soup& soup, SMP::Norm_preserving_qua
   Textured_soup result;
   result.uv.resize(soup.points.size());
   if(SMP::texture_polygon_soup(soup.points, soup.triangles, CGAL::make_property_map(result.uv),
-                               SMP::parameters::quality(quality).report(result.report)) != SMP::OK)
+                               SMP::parameters::quality(quality).combine(SMP::parameters::report(result.report))) != SMP::OK)
     result.uv.clear();
   return result;
 }

@@ -70,7 +70,7 @@ void texture_soup(const std::vector<Point_3>& points, const std::vector<std::vec
   std::vector<Point_2> uv(points.size(), sentinel);
   SMP::Texture_polygon_mesh_report report;
   const SMP::Error_code status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv),
-                                                           SMP::parameters::initial_guess(Guess()).report(report));
+                                                           SMP::parameters::initial_guess(Guess()).combine(SMP::parameters::report(report)));
   check_result(status, report, uv, on_face);
 }
 
@@ -81,7 +81,7 @@ void texture_mesh(const Mesh& mesh)
   auto uvmap = copy.add_property_map<Mesh::Vertex_index, Point_2>("v:uv", sentinel).first;
   SMP::Texture_polygon_mesh_report report;
   const SMP::Error_code status =
-    SMP::texture_polygon_mesh(copy, uvmap, SMP::parameters::initial_guess(Guess()).report(report));
+    SMP::texture_polygon_mesh(copy, uvmap, SMP::parameters::initial_guess(Guess()).combine(SMP::parameters::report(report)));
   std::vector<Point_2> uv;
   std::vector<bool> on_face;
   for(auto v : vertices(copy))

@@ -26,6 +26,11 @@
 
 #include <gtest/gtest.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
 #include <array>
 #include <map>
 #include <memory>
@@ -88,11 +93,13 @@ struct Graph_runs
   {
     auto uv = unset_uvs(mesh);
     auto marked = get(CGAL::dynamic_vertex_property_t<unsigned char>(), mesh); // OpenMesh: no bool
-    auto unused_index = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
+    auto index = get(CGAL::dynamic_vertex_property_t<int>(), mesh); // the vertex order, as CGAL's parameterize()
+    int next = 0;
+    for(auto v : vertices(mesh))
+      put(index, v, next++);
     SMP::Norm_preserving_parameterizer_3<Graph> parameterizer;
     parameterizer.set_automatic_fixed_pair(); // halfedges are not comparable across types
-    const SMP::Error_code status =
-      parameterizer.parameterize(mesh, halfedge(*faces(mesh).begin(), mesh), uv, unused_index, marked);
+    const SMP::Error_code status = parameterizer.parameterize(mesh, halfedge(*faces(mesh).begin(), mesh), uv, index, marked);
     EXPECT_EQ(status, SMP::OK) << parameterizer.report().message;
     report = parameterizer.report();
     return by_vertex_order(mesh, uv);
@@ -350,6 +357,97 @@ TEST(MeshTypesSeam, CutAddsSeamVertices)
   EXPECT_GT(held.seam_edges, 0u);
   EXPECT_GT(held.soup.points.size(), soup.points.size());
   EXPECT_EQ(held.soup.faces.size(), soup.faces.size());
+}
+
+// The parameterizer numbers the component in the order of the vertex index map it is given: with
+// the vertices' indices reversed, the uvs are those of the mesh built with its vertices in the
+// reversed order, bit for bit, and (the order reaching the solve) not those of the mesh's own order.
+TEST(VertexIndexMap, NumbersTheComponentInItsOrder)
+{
+  const Soup soup = read_soup("nefertiti");
+  const std::size_t n = soup.points.size();
+  Soup reversed;
+  for(std::size_t k = 0; k < n; ++k)
+    reversed.points.push_back(soup.points[n - 1 - k]);
+  for(const auto& f : soup.faces)
+  {
+    reversed.faces.emplace_back();
+    for(std::size_t i : f)
+      reversed.faces.back().push_back(n - 1 - i);
+  }
+  Mesh mesh, reordered;
+  build_graph(soup, mesh);
+  build_graph(reversed, reordered);
+  typedef Mesh::Vertex_index Vertex;
+  const auto h = halfedge(*faces(mesh).begin(), mesh);
+  const auto image = [&](Vertex v) { return Vertex(Mesh::size_type(n - 1 - std::size_t(v))); };
+  const auto h_image = halfedge(image(source(h, mesh)), image(target(h, mesh)), reordered).first;
+
+  const auto run = [](Mesh& m, Mesh::Halfedge_index bhd, auto index) {
+    auto uv = m.add_property_map<Vertex, Point_2>("v:uv", Point_2(-1, -1)).first;
+    auto marked = m.add_property_map<Vertex, bool>("v:marked", false).first;
+    SMP::Norm_preserving_parameterizer_3<Mesh> parameterizer;
+    EXPECT_EQ(parameterizer.parameterize(m, bhd, uv, index, marked), SMP::OK) << parameterizer.report().message;
+    std::vector<Point_2> result;
+    for(Vertex v : vertices(m))
+      result.push_back(get(uv, v));
+    m.remove_property_map(uv);
+    m.remove_property_map(marked);
+    return result;
+  };
+  auto reversed_index = mesh.add_property_map<Vertex, int>("v:reversed").first;
+  for(Vertex v : vertices(mesh))
+    put(reversed_index, v, int(n - 1 - std::size_t(v)));
+  const std::vector<Point_2> by_map = run(mesh, h, reversed_index);
+  const std::vector<Point_2> by_reordered_mesh = run(reordered, h_image, get(CGAL::vertex_index, reordered));
+  const std::vector<Point_2> by_mesh_order = run(mesh, h, get(CGAL::vertex_index, mesh));
+  std::size_t different = 0, moved = 0;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    different += by_map[k] != by_reordered_mesh[n - 1 - k];
+    moved += by_map[k] != by_mesh_order[k];
+  }
+  EXPECT_EQ(different, 0u);
+  EXPECT_GT(moved, 0u) << "the order of the vertices does not reach the solve: the test cannot tell";
+}
+
+// CGAL::Sequential_tag keeps every loop of a call on the calling thread, and gives the same uvs
+// as the default, bit for bit; so does the parameterizer's tag.
+TEST(ConcurrencyTag, SequentialGivesTheSameBitsOnOneThread)
+{
+  Mesh mesh;
+  build_graph(read_soup("cow"), mesh);
+  typedef Mesh::Vertex_index Vertex;
+  auto sequential_uv = mesh.add_property_map<Vertex, Point_2>("v:sequential").first;
+  auto default_uv = mesh.add_property_map<Vertex, Point_2>("v:default").first;
+  int threads = 0; // the most threads the call's work could use, seen from inside it
+  const auto count_threads = [&threads](const SMP::Norm_preserving_progress&) {
+#ifdef CGAL_LINKED_WITH_TBB
+    threads = (std::max)(threads, tbb::this_task_arena::max_concurrency());
+#else
+    threads = 1;
+#endif
+    return true;
+  };
+  ASSERT_EQ(SMP::texture_polygon_mesh<CGAL::Sequential_tag>(mesh, sequential_uv, SMP::parameters::progress(count_threads)),
+            SMP::OK);
+  EXPECT_EQ(threads, 1);
+  ASSERT_EQ(SMP::texture_polygon_mesh(mesh, default_uv), SMP::OK);
+  for(Vertex v : vertices(mesh))
+    ASSERT_EQ(get(sequential_uv, v), get(default_uv, v));
+
+  const auto parameterize = [&mesh](auto& parameterizer, auto uv) {
+    auto marked = mesh.add_property_map<Vertex, bool>("v:marked", false).first;
+    EXPECT_EQ(parameterizer.parameterize(mesh, halfedge(*faces(mesh).begin(), mesh), uv,
+                                         get(CGAL::vertex_index, mesh), marked), SMP::OK);
+    mesh.remove_property_map(marked);
+  };
+  SMP::Norm_preserving_parameterizer_3<Mesh, CGAL::Default, CGAL::Default, CGAL::Sequential_tag> sequential;
+  SMP::Norm_preserving_parameterizer_3<Mesh> parallel_if_available;
+  parameterize(sequential, sequential_uv);
+  parameterize(parallel_if_available, default_uv);
+  for(Vertex v : vertices(mesh))
+    ASSERT_EQ(get(sequential_uv, v), get(default_uv, v));
 }
 
 } // namespace

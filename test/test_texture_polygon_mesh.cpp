@@ -177,7 +177,7 @@ TEST(TexturePolygonMesh, NormPreservesTheExplicitFixedEdge)
 {
   Mesh mesh = np_test::load_mesh("torus_quad");
   const auto h = *halfedges(mesh).begin();
-  Textured t(mesh, SMP::parameters::texture_fit(SMP::NORM_PRESERVING_NO_FIT).fixed_pair(source(h, mesh), target(h, mesh)));
+  Textured t(mesh, SMP::parameters::texture_fit(SMP::NORM_PRESERVING_NO_FIT).combine(SMP::parameters::fixed_pair(source(h, mesh), target(h, mesh))));
   ASSERT_EQ(t.status, SMP::OK) << t.report.message;
   const Point_3 p = mesh.point(source(h, mesh)), q = mesh.point(target(h, mesh));
   const Point_2 a = get(t.uv, source(h, mesh)), b = get(t.uv, target(h, mesh));
@@ -228,7 +228,7 @@ TEST(TexturePolygonMeshErrors, OneBadComponentLeavesTheWholeMapUntouched)
   auto uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
   SMP::Texture_polygon_mesh_report report;
   const SMP::Error_code status =
-    SMP::texture_polygon_mesh(mesh, uv, SMP::parameters::initial_guess(No_guess_for_tetrahedra()).report(report));
+    SMP::texture_polygon_mesh(mesh, uv, SMP::parameters::initial_guess(No_guess_for_tetrahedra()).combine(SMP::parameters::report(report)));
   EXPECT_EQ(status, SMP::ERROR_WRONG_PARAMETER);
   EXPECT_EQ(report.message, "component 1: no guess for a tetrahedron");
   for(Vertex v : vertices(mesh))
@@ -259,7 +259,7 @@ TEST(NamedParameters, AreReadHoweverTheyAreGiven)
   const auto points = CGAL::make_property_map(copy);
   const auto by_index = [&](Vertex v) { return copy[std::size_t(v)]; };
   const auto mapped = boost::make_function_property_map<Vertex, Point_3>(by_index);
-  const Textured reordered(mesh, SMP::parameters::vertex_point_map(mapped).tiling(3, 2).weld_coincident_vertices(true));
+  const Textured reordered(mesh, SMP::parameters::vertex_point_map(mapped).combine(SMP::parameters::tiling(3, 2), SMP::parameters::weld_coincident_vertices(true)));
   EXPECT_EQ(reordered.status, SMP::OK);
   for(Vertex v : vertices(mesh))
     EXPECT_EQ(get(reordered.uv, v), get(reference.uv, v));
@@ -275,7 +275,7 @@ TEST(NamedParameters, AreReadHoweverTheyAreGiven)
   }
   std::vector<Point_2> uv(copy.size());
   EXPECT_EQ(SMP::texture_polygon_soup(indices, polygons, CGAL::make_property_map(uv),
-                                      SMP::parameters::point_map(points).tiling(3, 2)),
+                                      SMP::parameters::point_map(points).combine(SMP::parameters::tiling(3, 2))),
             SMP::OK);
   for(Vertex v : vertices(mesh))
     EXPECT_EQ(uv[std::size_t(v)], get(reference.uv, v));

@@ -12,6 +12,8 @@ whose order along `u` and along `v` on each edge fixes the signs of the QP (Eq. 
 order matters: the guess is then moved by a similarity transform onto the fixed pair.
 
 \cgalHasModel `XY_min_max_initial_guess`, `Combination_initial_guess`, `Graph_based_initial_guess`
+
+Checked at compile time by `concepts::NormPreservingInitialGuess`.
 */
 class NormPreservingInitialGuess
 {
@@ -60,6 +62,8 @@ The parameterizer solves once, then, with the sign refinement, again with other 
 same geometry and fixed pair, handing every solve the same `State`.
 
 \cgalHasModel `Norm_preserving_ADMM_solver`, `Norm_preserving_QP_solver`
+
+Checked at compile time by `concepts::NormPreservingSolver`.
 */
 class NormPreservingSolver
 {

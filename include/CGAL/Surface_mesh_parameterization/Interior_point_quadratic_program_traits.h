@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 /// \file Interior_point_quadratic_program_traits.h
 /// \ingroup PkgNormPreservingParameterization
@@ -7,6 +15,10 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERIOR_POINT_QUADRATIC_PROGRAM_TRAITS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERIOR_POINT_QUADRATIC_PROGRAM_TRAITS_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/disable_warnings.h>
 
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Interior_point_solver.h>
 
@@ -303,5 +315,7 @@ private:
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif

@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 /// \file Norm_preserving_QP_solver.h
 /// \ingroup PkgNormPreservingParameterization
@@ -8,8 +16,15 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_QP_SOLVER_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_QP_SOLVER_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_concepts.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Sign_constrained_qp.h>
+
+#include <boost/concept/assert.hpp>
 
 #include <algorithm>
 #include <array>
@@ -53,6 +68,8 @@ struct Has_statistics<T, std::void_t<decltype(std::declval<const T&>().statistic
 template <typename QuadraticProgramTraits>
 class Norm_preserving_QP_solver
 {
+  BOOST_CONCEPT_ASSERT((concepts::QuadraticProgramTraits<QuadraticProgramTraits>));
+
 public:
   /// nothing: every solve starts anew.
   struct State { };
@@ -114,11 +131,22 @@ private:
 namespace internal {
 namespace Norm_preserving {
 
-// A model of NormPreservingSolver as it is; a model of QuadraticProgramTraits wrapped.
+// Whether `Solver` has the types and the call of a `NormPreservingSolver`.
 template <typename Solver, typename = void>
-struct Solver_model { typedef Norm_preserving_QP_solver<Solver> type; };
+struct Is_norm_preserving_solver : std::false_type { };
 template <typename Solver>
-struct Solver_model<Solver, std::void_t<typename Solver::State> > { typedef Solver type; };
+struct Is_norm_preserving_solver<Solver, std::void_t<typename Solver::State, decltype(std::declval<const Solver&>().solve(
+  std::declval<const Norm_preserving_problem&>(), std::declval<std::vector<std::array<double, 2> >&>(),
+  std::declval<typename Solver::State&>(), std::declval<Norm_preserving_solve_report&>()))> > : std::true_type { };
+
+// A model of NormPreservingSolver as it is; anything else is taken for a model of
+// QuadraticProgramTraits and wrapped (whose concept check then says what it lacks).
+template <typename Solver>
+struct Solver_model
+{
+  typedef typename std::conditional<Is_norm_preserving_solver<Solver>::value, Solver,
+                                    Norm_preserving_QP_solver<Solver> >::type type;
+};
 
 class Two_column_cholesky;
 
@@ -132,5 +160,7 @@ const Two_column_cholesky* factored_laplacian(const State&) { return nullptr; }
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif

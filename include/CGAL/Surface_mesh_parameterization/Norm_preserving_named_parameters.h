@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 /// \file Norm_preserving_named_parameters.h
 /// \ingroup PkgNormPreservingParameterization
@@ -8,12 +16,17 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_NAMED_PARAMETERS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_NAMED_PARAMETERS_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/disable_warnings.h>
+
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_quality.h>
 #include <CGAL/Surface_mesh_parameterization/Texture_fit.h>
 
 #include <CGAL/Named_function_parameters.h>
 
 #include <array>
+#include <type_traits>
 #include <utility>
 
 namespace CGAL {
@@ -36,68 +49,63 @@ enum progress_t { progress };
 } // namespace internal_np
 /// \endcond
 
-/// \ingroup PkgNormPreservingParameterizationTypes
-/// A pack of named parameters of the whole-mesh calls: CGAL's `Named_function_parameters`,
-/// which CGAL's `get_parameter()` and `choose_parameter()` read, with a member for each of the
-/// package's parameters so that they chain in any order, as CGAL's own do. Made by the
-/// functions of `CGAL::Surface_mesh_parameterization::parameters`, never directly.
-///
-/// CGAL 5.5's named parameters cannot be extended outside CGAL: a chain started by
-/// `CGAL::parameters::` takes no parameter of this package. Start it here instead
-/// (`SMP::parameters::vertex_point_map(vpm).tiling(2, 2)`); on CGAL 6, a chain of CGAL's can also
-/// take one of these through its `combine()`.
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+namespace Norm_preserving {
+
+// Whether CGAL's named parameters have `combine()` (CGAL 6): the way CGAL lets a package
+// outside it add parameters to a chain.
+template <typename NP, typename = void>
+struct Has_combine : std::false_type { };
+template <typename NP>
+struct Has_combine<NP, std::void_t<decltype(std::declval<const NP&>().combine(std::declval<const NP&>()))> >
+  : std::true_type { };
+
+// CGAL 5.5's named parameters, with the `combine()` that CGAL 6 has: on CGAL 5.5, a chain of
+// this package's parameters (or of `vertex_point_map()`, `point_map()`, `geom_traits()` started
+// here) is joined the way CGAL 6 joins them (doc/decisions.md, "Named parameters").
 template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
-struct Norm_preserving_named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
+struct Combinable_named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 {
-  /// \cond SKIP_IN_MANUAL
   typedef CGAL::Named_function_parameters<T, Tag, Base> Cgal_parameters;
-  typedef Norm_preserving_named_parameters<T, Tag, Base> self;
+  typedef Combinable_named_parameters<T, Tag, Base> self;
   using Cgal_parameters::Cgal_parameters;
 
-  template <typename K, typename KTag>
-  Norm_preserving_named_parameters<K, KTag, self> add(const K& k) const
+  template <typename OT, typename OTag>
+  Combinable_named_parameters<OT, OTag, self> combine(const CGAL::Named_function_parameters<OT, OTag>& np) const
   {
-    return Norm_preserving_named_parameters<K, KTag, self>(k, *this);
+    return Combinable_named_parameters<OT, OTag, self>(np.v, *this);
   }
-
-  template <typename Guess> auto initial_guess(const Guess& g) const { return add<Guess, internal_np::initial_guess_t>(g); }
-  template <typename Solver> auto solver(const Solver& s) const { return add<Solver, internal_np::solver_t>(s); }
-  auto quality(Norm_preserving_quality q) const { return add<Norm_preserving_quality, internal_np::quality_t>(q); }
-  auto texture_fit(Texture_fit fit) const { return add<Texture_fit, internal_np::texture_fit_t>(fit); }
-  auto tiling(int m, int n) const { return add<std::array<int, 2>, internal_np::tiling_t>({m, n}); }
-  template <typename Vertex>
-  auto fixed_pair(const Vertex& a, const Vertex& b) const
+  template <typename OT, typename OTag, typename... NPS>
+  auto combine(const CGAL::Named_function_parameters<OT, OTag>& np, const NPS&... nps) const
   {
-    return add<std::pair<Vertex, Vertex>, internal_np::fixed_pair_t>({a, b});
+    return combine(np).combine(nps...);
   }
-  auto sign_refinement(int max_rounds, double tolerance = 1e-3) const
-  {
-    return add<std::pair<int, double>, internal_np::sign_refinement_t>({max_rounds, tolerance});
-  }
-  auto euclidean_refinement(int max_iterations, double tolerance = 1e-3) const
-  {
-    return add<std::pair<int, double>, internal_np::euclidean_refinement_t>({max_iterations, tolerance});
-  }
-  auto weld_coincident_vertices(bool weld) const { return add<bool, internal_np::weld_coincident_vertices_t>(weld); }
-  template <typename Report> auto report(Report& r) const { return add<Report*, internal_np::report_t>(&r); }
-  template <typename Callback> auto progress(const Callback& f) const { return add<Callback, internal_np::progress_t>(f); }
-  template <typename Map> auto vertex_point_map(const Map& m) const { return add<Map, CGAL::internal_np::vertex_point_t>(m); }
-  template <typename Map> auto point_map(const Map& m) const { return add<Map, CGAL::internal_np::point_t>(m); }
-  template <typename Traits> auto geom_traits(const Traits& t) const { return add<Traits, CGAL::internal_np::geom_traits_t>(t); }
-  /// \endcond
 };
 
+// CGAL's own named parameters where they combine, the class above otherwise.
+template <typename T, typename Tag>
+using Package_named_parameters = typename std::conditional<
+  Has_combine<CGAL::parameters::Default_named_parameters>::value,
+  CGAL::Named_function_parameters<T, Tag>, Combinable_named_parameters<T, Tag> >::type;
+
+} // namespace Norm_preserving
+} // namespace internal
+/// \endcond
+
 /// The named parameters of `texture_polygon_soup()`, `texture_polygon_mesh()` and
-/// `texture_indexed_mesh()`. Each function starts a chain; the same names as members continue
-/// it, in any order: `SMP::parameters::tiling(2, 2).quality(SMP::NORM_PRESERVING_DRAFT_QUALITY)`.
+/// `texture_indexed_mesh()`, each a CGAL named parameter of its own. `combine()` joins them,
+/// in any order, as CGAL 6 joins a package's parameters to CGAL's own:
+/// `SMP::parameters::tiling(2, 2).combine(SMP::parameters::quality(SMP::NORM_PRESERVING_DRAFT_QUALITY))`,
+/// or on CGAL 6 `CGAL::parameters::vertex_point_map(vpm).combine(SMP::parameters::tiling(2, 2))`.
 /// A parameter left out takes its default.
 namespace parameters {
 
 /// \cond SKIP_IN_MANUAL
 template <typename Tag, typename T>
-Norm_preserving_named_parameters<T, Tag> start(const T& value)
+internal::Norm_preserving::Package_named_parameters<T, Tag> start(const T& value)
 {
-  return Norm_preserving_named_parameters<T, Tag>(value);
+  return internal::Norm_preserving::Package_named_parameters<T, Tag>(value);
 }
 /// \endcond
 
@@ -158,15 +166,17 @@ auto report(Report& r) { return start<internal_np::report_t>(&r); }
 template <typename Callback>
 auto progress(const Callback& f) { return start<internal_np::progress_t>(f); }
 
-/// CGAL's `vertex_point_map` (of `texture_polygon_mesh()`), starting a chain of this package.
+/// CGAL's `vertex_point_map` (of `texture_polygon_mesh()`), for a chain that `combine()` joins on
+/// CGAL 5.5 too.
 template <typename Map>
 auto vertex_point_map(const Map& m) { return start<CGAL::internal_np::vertex_point_t>(m); }
 
-/// CGAL's `point_map` (of `texture_polygon_soup()`), starting a chain of this package.
+/// CGAL's `point_map` (of `texture_polygon_soup()`), for a chain that `combine()` joins on
+/// CGAL 5.5 too.
 template <typename Map>
 auto point_map(const Map& m) { return start<CGAL::internal_np::point_t>(m); }
 
-/// CGAL's `geom_traits`, starting a chain of this package.
+/// CGAL's `geom_traits`, for a chain that `combine()` joins on CGAL 5.5 too.
 template <typename Traits>
 auto geom_traits(const Traits& t) { return start<CGAL::internal_np::geom_traits_t>(t); }
 
@@ -174,5 +184,7 @@ auto geom_traits(const Traits& t) { return start<CGAL::internal_np::geom_traits_
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif

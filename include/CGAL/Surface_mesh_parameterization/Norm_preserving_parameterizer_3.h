@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 /// \file Norm_preserving_parameterizer_3.h
 /// \ingroup PkgNormPreservingParameterization
@@ -8,16 +16,24 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_PARAMETERIZER_3_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_PARAMETERIZER_3_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/disable_warnings.h>
+
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_ADMM_solver.h>
+#include <CGAL/Surface_mesh_parameterization/Norm_preserving_concepts.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
 #include <CGAL/Surface_mesh_parameterization/XY_min_max_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Mesh_component.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Pipeline.h>
 
 #include <CGAL/Default.h>
+#include <CGAL/tags.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <boost/concept/assert.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
@@ -52,13 +68,18 @@ namespace Surface_mesh_parameterization {
 ///         `QuadraticProgramTraits`, such as `Interior_point_quadratic_program_traits` (the
 ///         exact optimum) or `CGAL::OSQP_quadratic_program_traits`, which is wrapped in
 ///         `Norm_preserving_QP_solver`
+/// \tparam ConcurrencyTag_ `CGAL::Sequential_tag` (the solver's loops on the calling thread),
+///         `CGAL::Parallel_tag` (on TBB's threads; needs TBB) or `CGAL::Parallel_if_available_tag`
+///         (the default); the uvs are the same, bit for bit
 ///
 /// \cgalModels `Parameterizer_3`
 template <typename TriangleMesh_,
           typename InitialGuess_ = Default,
-          typename SolverTraits_ = Default>
+          typename SolverTraits_ = Default,
+          typename ConcurrencyTag_ = Parallel_if_available_tag>
 class Norm_preserving_parameterizer_3
 {
+
 public:
   /// the mesh type
   typedef TriangleMesh_ Triangle_mesh;
@@ -71,6 +92,12 @@ public:
   /// the solver that solves: `Solver_traits` if it models `NormPreservingSolver`, otherwise
   /// `Norm_preserving_QP_solver<Solver_traits>`
   typedef typename internal::Norm_preserving::Solver_model<Solver_traits>::type Solver;
+  /// \cond SKIP_IN_MANUAL
+  BOOST_CONCEPT_ASSERT((concepts::NormPreservingInitialGuess<Initial_guess>));
+  BOOST_CONCEPT_ASSERT((concepts::NormPreservingSolver<Solver>));
+  /// \endcond
+  /// the concurrency tag
+  typedef ConcurrencyTag_ Concurrency_tag;
   /// halfedge handle of the mesh
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
   /// vertex handle of the mesh
@@ -138,7 +165,10 @@ public:
 
   /// assigns a uv to every vertex of the connected component of `bhd`, which may be any
   /// halfedge of it, border or not, and marks each in `vpmap`. Faces that share only a vertex
-  /// (a non-manifold vertex) belong to the same component, and the vertex gets one uv.
+  /// (a non-manifold vertex) belong to the same component, and the vertex gets one uv. The
+  /// component's vertices are numbered in the order of their indices in `vimap`, as CGAL's
+  /// parameterizers number their linear systems: the uvs are those of a mesh whose vertices
+  /// come in that order.
   ///
   /// On failure it returns `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH` (a face that is
   /// not a triangle of three distinct vertices), `ERROR_WRONG_PARAMETER` (non-finite
@@ -147,13 +177,14 @@ public:
   /// and writes nothing to `uvmap` or `vpmap`.
   ///
   /// \tparam VertexUVmap a model of `ReadWritePropertyMap` from vertices to a 2D point type
-  /// \tparam VertexIndexMap unused: the component is indexed in the mesh's vertex order
+  /// \tparam VertexIndexMap a model of `ReadablePropertyMap` from vertices to integers, distinct
+  ///         on the component (CGAL's `parameterize()` makes one)
   /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` from vertices to `bool`
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
   Error_code parameterize(Triangle_mesh& mesh,
                           halfedge_descriptor bhd,
                           VertexUVmap uvmap,
-                          VertexIndexMap /* vimap */,
+                          VertexIndexMap vimap,
                           VertexParameterizedMap vpmap)
   {
     typedef typename boost::property_traits<VertexUVmap>::value_type Point_2;
@@ -162,13 +193,14 @@ public:
     m_report = Norm_preserving_report();
     NP::Mesh_component<Triangle_mesh> component;
     std::vector<std::array<double, 2> > uv;
-    m_report.status = NP::extract_component(mesh, bhd, component, m_report.message);
+    m_report.status = NP::extract_component(mesh, bhd, vimap, component, m_report.message);
     std::optional<std::pair<std::size_t, std::size_t> > pair;
     if(m_report.status == OK)
       m_report.status = explicit_pair(mesh, bhd, component, pair);
     m_report.timings.extraction = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if(m_report.status == OK)
-      m_report.status = m_pipeline.run(std::move(component.geometry), pair, uv, m_report);
+      m_report.status = NP::run_with_concurrency<Concurrency_tag>(
+        [&] { return m_pipeline.run(std::move(component.geometry), pair, uv, m_report); });
     if(m_report.status == OK)
       m_fixed = {component.vertices[m_report.fixed_a], component.vertices[m_report.fixed_b]};
     if(m_report.status == OK)
@@ -214,5 +246,7 @@ private:
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif

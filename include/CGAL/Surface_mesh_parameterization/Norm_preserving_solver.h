@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 /// \file Norm_preserving_solver.h
 /// \ingroup PkgNormPreservingParameterization
@@ -7,6 +15,10 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_SOLVER_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_NORM_PRESERVING_SOLVER_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/disable_warnings.h>
 
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_report.h>
@@ -52,5 +64,7 @@ struct Norm_preserving_problem
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif

@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 /// \file Parameterization_distortion.h
 /// \ingroup PkgNormPreservingParameterization
@@ -7,6 +15,10 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_DISTORTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_DISTORTION_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/disable_warnings.h>
 
 #include <CGAL/Surface_mesh_parameterization/triangulate_polygon_soup.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Soup_graph.h>
@@ -290,5 +302,7 @@ Parameterization_distortion measure_soup_distortion(const PointRange& points, co
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif

@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 /// \file cut_to_disk.h
 /// \ingroup PkgNormPreservingParameterization
@@ -7,6 +15,10 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_CUT_TO_DISK_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_CUT_TO_DISK_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/disable_warnings.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Tree_cotree_cut.h>
@@ -134,5 +146,7 @@ cut_to_disk(CGAL::Seam_mesh<TriangleMesh, SeamEdgeMap, SeamVertexMap>& seam_mesh
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif

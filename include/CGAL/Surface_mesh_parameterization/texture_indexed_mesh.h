@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 /// \file texture_indexed_mesh.h
 /// \ingroup PkgNormPreservingParameterization
@@ -7,6 +15,10 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_INDEXED_MESH_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_INDEXED_MESH_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/disable_warnings.h>
 
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 
@@ -49,6 +61,7 @@ struct Indexed_mesh_traits;
 /// `put(uvmap, i, uv)`. Vertices on no face are left as they were; on failure nothing is
 /// written.
 ///
+/// \tparam ConcurrencyTag as for `texture_polygon_soup()`
 /// \tparam IndexedMesh the user's mesh type
 /// \tparam VertexUVMap a model of `WritablePropertyMap` from `std::size_t` to a 2D point type
 /// \tparam NamedParameters a sequence of named parameters
@@ -58,11 +71,12 @@ struct Indexed_mesh_traits;
 /// \param np the named parameters of `texture_polygon_soup()` (`fixed_pair` as vertex indices)
 ///        but `point_map` and `geom_traits`: `traits` reads the points
 /// \param traits reads the mesh
-template <typename IndexedMesh, typename VertexUVMap,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters,
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename IndexedMesh, typename VertexUVMap,
+          typename CGAL_NP_TEMPLATE_PARAMETERS,
           typename Traits = Indexed_mesh_traits<IndexedMesh> >
 Error_code texture_indexed_mesh(const IndexedMesh& mesh, VertexUVMap uvmap,
-                                const NamedParameters& np = CGAL::parameters::default_values(),
+                                const CGAL_NP_CLASS& np = CGAL::parameters::default_values(),
                                 const Traits& traits = Traits())
 {
   std::vector<std::array<double, 3> > positions;
@@ -76,11 +90,13 @@ Error_code texture_indexed_mesh(const IndexedMesh& mesh, VertexUVMap uvmap,
   for(std::size_t f = 0; f < polygons.size(); ++f)
     for(const auto& i : traits.face(mesh, f))
       polygons[f].push_back(std::size_t(i));
-  return internal::Norm_preserving::texture_soup(std::move(positions), polygons, uvmap, np,
-                                                 [](const auto& i) { return std::size_t(i); });
+  return internal::Norm_preserving::texture_soup<ConcurrencyTag>(std::move(positions), polygons, uvmap, np,
+                                                                 [](const auto& i) { return std::size_t(i); });
 }
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif

@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 /// \file texture_polygon_mesh.h
 /// \ingroup PkgNormPreservingParameterization
@@ -7,6 +15,10 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_POLYGON_MESH_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_TEXTURE_POLYGON_MESH_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/disable_warnings.h>
 
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_named_parameters.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
@@ -24,6 +36,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
+#include <boost/concept/assert.hpp>
 #include <boost/property_map/compose_property_map.hpp>
 #include <boost/property_map/property_map.hpp>
 
@@ -122,6 +135,8 @@ Error_code texture_soup(std::vector<std::array<double, 3> > positions, const Pol
   // Every component in mesh units (NORM_PRESERVING_NO_FIT), then one layout and one fit for all.
   std::vector<std::array<double, 2> > uv(n, {0., 0.});
   typedef typename Solver_model<SolverTraits>::type Solver;
+  BOOST_CONCEPT_ASSERT((concepts::NormPreservingInitialGuess<InitialGuess>));
+  BOOST_CONCEPT_ASSERT((concepts::NormPreservingSolver<Solver>));
   Pipeline<InitialGuess, Solver> pipeline(guess, Solver(solver));
   pipeline.options() = options;
   pipeline.options().texture_fit = NORM_PRESERVING_NO_FIT; // the fit and the tiling come after the layout
@@ -214,13 +229,15 @@ std::array<double, 3> coordinates(const Traits& traits, const Point& p)
           CGAL::to_double(traits.compute_z_3_object()(p))};
 }
 
-// texture_soup() with what the named parameters say.
-template <typename PolygonRange, typename VertexUVMap, typename NamedParameters, typename Index>
+// texture_soup() with what the named parameters say, on the threads that ConcurrencyTag allows.
+template <typename ConcurrencyTag, typename PolygonRange, typename VertexUVMap, typename NamedParameters, typename Index>
 Error_code texture_soup(std::vector<std::array<double, 3> > positions, const PolygonRange& polygons, VertexUVMap uvmap,
                         const NamedParameters& np, const Index& index)
 {
-  return texture_soup(std::move(positions), polygons, uvmap, named_options(np), named_guess(np), named_solver(np),
-                      named_fixed_pair(np, index), named_report<Texture_polygon_mesh_report>(np), named_progress(np));
+  return run_with_concurrency<ConcurrencyTag>([&] {
+    return texture_soup(std::move(positions), polygons, uvmap, named_options(np), named_guess(np), named_solver(np),
+                        named_fixed_pair(np, index), named_report<Texture_polygon_mesh_report>(np), named_progress(np));
+  });
 }
 
 } // namespace Norm_preserving
@@ -250,6 +267,10 @@ Error_code texture_soup(std::vector<std::array<double, 3> > positions, const Pol
 ///   on no face, in two components, welded into one vertex or not an edge;
 /// - or the error of a component, as `Norm_preserving_parameterizer_3::parameterize()` says.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the package's loops on the calling thread),
+///         `CGAL::Parallel_tag` (on TBB's threads; needs TBB) or `CGAL::Parallel_if_available_tag`
+///         (the default: TBB's threads when the package is built with TBB); the uvs are the same,
+///         bit for bit
 /// \tparam PointRange a range of points (or of anything `point_map` maps to points)
 /// \tparam PolygonRange a random-access range of ranges of integer indices
 /// \tparam VertexUVMap a model of `WritablePropertyMap` from `std::size_t` to a 2D point type
@@ -263,12 +284,14 @@ Error_code texture_soup(std::vector<std::array<double, 3> > positions, const Pol
 ///        `weld_coincident_vertices`, `report`, `progress`; and CGAL's `point_map` (default the identity)
 ///        and `geom_traits` (default the kernel of the point type), whose `Compute_x_3`,
 ///        `Compute_y_3` and `Compute_z_3` read the coordinates
-template <typename PointRange, typename PolygonRange, typename VertexUVMap,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename PointRange, typename PolygonRange, typename VertexUVMap,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& polygons, VertexUVMap uvmap,
-                                const NamedParameters& np = CGAL::parameters::default_values())
+                                const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   namespace P = CGAL::parameters;
+  typedef CGAL_NP_CLASS NamedParameters;
   typedef typename GetPointMap<PointRange, NamedParameters>::const_type Point_map;
   const Point_map point_map = P::choose_parameter<Point_map>(P::get_parameter(np, CGAL::internal_np::point_map));
   typedef typename CGAL::Kernel_traits<typename boost::property_traits<Point_map>::value_type>::Kernel Default_traits;
@@ -277,8 +300,8 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
   std::vector<std::array<double, 3> > positions;
   for(const auto& element : points)
     positions.push_back(internal::Norm_preserving::coordinates(traits, get(point_map, element)));
-  return internal::Norm_preserving::texture_soup(std::move(positions), polygons, uvmap, np,
-                                                 [](const auto& i) { return std::size_t(i); });
+  return internal::Norm_preserving::texture_soup<ConcurrencyTag>(std::move(positions), polygons, uvmap, np,
+                                                                 [](const auto& i) { return std::size_t(i); });
 }
 
 /// \ingroup PkgNormPreservingParameterizationFunctions
@@ -287,6 +310,7 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
 /// `uvmap`. Vertices on no face are left as they were. Fails as `texture_polygon_soup()`
 /// does, writing nothing.
 ///
+/// \tparam ConcurrencyTag as for `texture_polygon_soup()`
 /// \tparam PolygonMesh a model of `FaceListGraph`
 /// \tparam VertexUVMap a model of `WritablePropertyMap` from vertices to a 2D point type
 /// \tparam NamedParameters a sequence of named parameters
@@ -295,12 +319,14 @@ Error_code texture_polygon_soup(const PointRange& points, const PolygonRange& po
 /// \param np the named parameters of `texture_polygon_soup()`, with `fixed_pair` given as two
 ///        vertex descriptors, and CGAL's `vertex_point_map` (default the mesh's internal map)
 ///        in place of `point_map`; `geom_traits` defaults to the kernel of its points
-template <typename PolygonMesh, typename VertexUVMap,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename PolygonMesh, typename VertexUVMap,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
-                                const NamedParameters& np = CGAL::parameters::default_values())
+                                const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   namespace P = CGAL::parameters;
+  typedef CGAL_NP_CLASS NamedParameters;
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
   const auto vpm = P::choose_parameter(P::get_parameter(np, CGAL::internal_np::vertex_point),
                                        get_const_property_map(CGAL::vertex_point, mesh));
@@ -324,12 +350,14 @@ Error_code texture_polygon_mesh(const PolygonMesh& mesh, VertexUVMap uvmap,
     for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
       polygons.back().push_back(get(index_of, v));
   }
-  return internal::Norm_preserving::texture_soup(std::move(positions), polygons,
-                                                 boost::make_compose_property_map(uvmap, CGAL::make_property_map(original)),
-                                                 np, [&](vertex_descriptor v) { return get(index_of, v); });
+  return internal::Norm_preserving::texture_soup<ConcurrencyTag>(
+    std::move(positions), polygons, boost::make_compose_property_map(uvmap, CGAL::make_property_map(original)), np,
+    [&](vertex_descriptor v) { return get(index_of, v); });
 }
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
 
 #endif

@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // Every setting of the default solver (Sign_constrained_admm.h) and of its active-set polish
 // (Active_set_polish.h), in one place. The measurements that chose each value are in
@@ -7,6 +15,8 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ADMM_SETTINGS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_ADMM_SETTINGS_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <cstddef>
 #include <limits>

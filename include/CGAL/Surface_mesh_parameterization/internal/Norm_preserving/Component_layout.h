@@ -1,11 +1,21 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // Lays the separately parameterized components of a mesh side by side, at their common
 // scale, with disjoint bounding boxes (shelf packing, tallest first).
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_COMPONENT_LAYOUT_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_COMPONENT_LAYOUT_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <algorithm>
 #include <array>

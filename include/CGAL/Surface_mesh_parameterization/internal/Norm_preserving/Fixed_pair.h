@@ -1,10 +1,20 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // Step 2 of the paper: the fixed adjacent pair (doc/decisions.md, 2) and its target positions.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FIXED_PAIR_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FIXED_PAIR_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Geometry.h>

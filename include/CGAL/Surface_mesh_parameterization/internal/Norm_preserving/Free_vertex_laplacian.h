@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // The graph Laplacian D'D of the mesh restricted to its free vertices (the two fixed ones
 // eliminated, Dirichlet), and the right-hand side of a least-squares fit of the mesh to wished
@@ -11,6 +19,8 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FREE_VERTEX_LAPLACIAN_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_FREE_VERTEX_LAPLACIAN_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Normal_equations.h>

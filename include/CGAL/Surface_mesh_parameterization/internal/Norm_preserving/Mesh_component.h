@@ -1,11 +1,22 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
+//
 // Step "extract" of the data flow: the connected component of a halfedge, indexed in the
-// mesh's own vertex order, with positions, unique edges, and validation of the input.
+// order of a vertex index map (or the mesh's own vertex order), with positions, unique edges,
+// and validation of the input.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_MESH_COMPONENT_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_MESH_COMPONENT_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_initial_guess.h>
@@ -13,6 +24,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Dynamic_property_map.h>
+#include <CGAL/property_map.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -80,10 +92,12 @@ struct Vertex_faces
 };
 
 // Fills `component` with the component of the face incident to `h` (or to its opposite if
-// `h` is a border halfedge). Returns OK or an error with a message.
-template <typename TriangleMesh>
+// `h` is a border halfedge), its vertices numbered in the order of `vimap` (ties in the mesh's
+// vertex order). Returns OK or an error with a message.
+template <typename TriangleMesh, typename VertexIndexMap>
 Error_code extract_component(TriangleMesh& mesh,
                              typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
+                             VertexIndexMap vimap,
                              Mesh_component<TriangleMesh>& component,
                              std::string& message)
 {
@@ -158,11 +172,15 @@ Error_code extract_component(TriangleMesh& mesh,
   component.index = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
   component.vertices.clear();
   component.geometry.points.clear();
-  const auto ppmap = get(CGAL::vertex_point, mesh);
+  std::vector<vertex_descriptor> ordered;
   for(vertex_descriptor v : vertices(mesh))
+    if(component.has(v))
+      ordered.push_back(v);
+  std::stable_sort(ordered.begin(), ordered.end(),
+                   [&](vertex_descriptor a, vertex_descriptor b) { return get(vimap, a) < get(vimap, b); });
+  const auto ppmap = get(CGAL::vertex_point, mesh);
+  for(vertex_descriptor v : ordered)
   {
-    if(!component.has(v))
-      continue;
     const auto& p = get(ppmap, v);
     const std::array<double, 3> xyz = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     if(!(std::isfinite(xyz[0]) && std::isfinite(xyz[1]) && std::isfinite(xyz[2])))
@@ -188,6 +206,17 @@ Error_code extract_component(TriangleMesh& mesh,
     }
   std::sort(edges.begin(), edges.end());
   return OK;
+}
+
+// extract_component() with the vertices numbered in the mesh's vertex order.
+template <typename TriangleMesh>
+Error_code extract_component(TriangleMesh& mesh,
+                             typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
+                             Mesh_component<TriangleMesh>& component,
+                             std::string& message)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  return extract_component(mesh, h, CGAL::Constant_property_map<vertex_descriptor, int>(0), component, message);
 }
 
 } // namespace Norm_preserving

@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // Runs independent pieces of work on several threads when the package is built with TBB
 // (CGAL_LINKED_WITH_TBB), one after the other otherwise. The callers split their work into
@@ -11,8 +19,14 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PARALLEL_FOR_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_PARALLEL_FOR_H
 
+#include <CGAL/license/Surface_mesh_parameterization.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/tags.h>
+
 #include <algorithm>
 #include <cstddef>
+#include <type_traits>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_for.h>
@@ -23,6 +37,30 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 namespace Norm_preserving {
+
+// Returns f(): with `CGAL::Sequential_tag`, every loop below that f() runs stays on the calling
+// thread (a TBB arena of one thread); with `CGAL::Parallel_tag` they may use all of TBB's.
+// Both give the same bits.
+template <typename ConcurrencyTag, typename Function>
+auto run_with_concurrency(const Function& f)
+{
+  static_assert(std::is_same<ConcurrencyTag, CGAL::Sequential_tag>::value ||
+                std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "ConcurrencyTag: CGAL::Sequential_tag, CGAL::Parallel_tag or CGAL::Parallel_if_available_tag");
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(std::is_same<ConcurrencyTag, CGAL::Sequential_tag>::value)
+  {
+    tbb::task_arena one_thread(1);
+    return one_thread.execute(f);
+  }
+  else
+    return f();
+#else
+  static_assert(!std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+  return f();
+#endif
+}
 
 // Calls f(0), ..., f(count - 1), in any order and possibly at once (one piece alone runs on
 // the calling thread).

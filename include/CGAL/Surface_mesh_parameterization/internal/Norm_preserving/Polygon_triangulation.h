@@ -1,11 +1,21 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // Step 1 of the paper for one polygon of a soup, adding no vertex: a polygon that passes
 // through a vertex twice split into simple polygons, and each of them triangulated.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_POLYGON_TRIANGULATION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_POLYGON_TRIANGULATION_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>

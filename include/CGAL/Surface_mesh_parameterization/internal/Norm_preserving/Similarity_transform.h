@@ -1,11 +1,21 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // Steps 4-5 of the paper: the similarity M that moves the guessed positions of the fixed
 // pair onto their targets, applied to the whole guess.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIMILARITY_TRANSFORM_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SIMILARITY_TRANSFORM_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <array>
 #include <complex>

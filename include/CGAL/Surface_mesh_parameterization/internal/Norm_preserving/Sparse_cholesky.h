@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // What the package's sparse factorizations share: their settings, CHOLMOD reached through its
 // own C API, and the factorization of the interior-point QP solver (CHOLMOD's supernodal one
@@ -7,6 +15,8 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SPARSE_CHOLESKY_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_SPARSE_CHOLESKY_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>

@@ -1,11 +1,21 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // Steps 8-9 of the paper: fitting the solution into texture space (doc/decisions.md, 8) and
 // m x n tiling.
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TEXTURE_SPACE_FIT_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TEXTURE_SPACE_FIT_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <CGAL/Surface_mesh_parameterization/Texture_fit.h>
 

@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // Sparse Cholesky factorization L L' = P A P' of a symmetric positive definite matrix, kept
 // in simplicial form with a solve for two right-hand sides at once, stored interleaved
@@ -26,6 +34,8 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TWO_COLUMN_CHOLESKY_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_TWO_COLUMN_CHOLESKY_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Norm_preserving/Level_set_dissection.h>

@@ -1,5 +1,13 @@
-// Copyright (c) 2026 The CGAL_norm_preserving_parameterization authors.
+// Copyright (c) 2026  The CGAL_norm_preserving_parameterization authors.
+// All rights reserved.
+//
+// This file is part of the package Norm_preserving_parameterization for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The CGAL_norm_preserving_parameterization authors
 //
 // The interpolating uniform cubic B-spline of the graph-based initial guess (Section 4.3 of
 // the paper, doc/decisions.md, 7): the curve f(t), 0 <= t <= 1, through data points D_0..D_{N-1}
@@ -11,6 +19,8 @@
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_UNIFORM_CUBIC_BSPLINE_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_NORM_PRESERVING_UNIFORM_CUBIC_BSPLINE_H
+
+#include <CGAL/license/Surface_mesh_parameterization.h>
 
 #include <CGAL/assertions.h>
 
