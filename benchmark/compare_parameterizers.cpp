@@ -5,7 +5,7 @@
 // refinement after a loosely solved QP, see doc/refinement.md) and
 // CGAL's LSCM, ARAP, discrete conformal, discrete authalic, mean value coordinates and
 // iterative authalic (on a disk: the mesh cut by cut_to_disk where it is not one), each in a
-// new process of its own (doc/performance.md, change 33), and prints one table as Markdown
+// new process of its own (doc/performance.md, "Memory"), and prints one table as Markdown
 // (stdout) and CSV (--csv), with a plot of time against vertex count (--svg). Progress goes to
 // stderr.
 //
@@ -194,12 +194,12 @@ Measurement measure_ours(Mesh& mesh, int runs, int sign_rounds = 0, int euclidea
   m.seconds = median_seconds(runs, [&] {
     SMP::Texture_polygon_mesh_report report;
     const bool ok = SMP::texture_polygon_mesh(mesh, uv,
-                                              SMP::parameters::initial_guess(InitialGuess())
-                                                .solver(solver)
-                                                .texture_fit(SMP::NORM_PRESERVING_NO_FIT)
-                                                .sign_refinement(sign_rounds)
-                                                .euclidean_refinement(euclidean_iterations)
-                                                .report(report)) == SMP::OK;
+                                              SMP::parameters::initial_guess(InitialGuess()).combine(
+                                                SMP::parameters::solver(solver),
+                                                SMP::parameters::texture_fit(SMP::NORM_PRESERVING_NO_FIT),
+                                                SMP::parameters::sign_refinement(sign_rounds),
+                                                SMP::parameters::euclidean_refinement(euclidean_iterations),
+                                                SMP::parameters::report(report))) == SMP::OK;
     m.optimality_gap = report.optimality_gap;
     return ok ? std::string() : report.message;
   });

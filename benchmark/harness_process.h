@@ -73,7 +73,7 @@ inline int run_as_child(const std::function<std::string()>& work)
 // not a fork: a fork inherits the harness's allocator state (glibc raises its mmap threshold
 // to the size of a mapped block freed, and its trim threshold to twice that), and a small mesh
 // measured after a large one ran without the page faults it has on its own, a method's time
-// then depending on the meshes measured before it (doc/performance.md, change 33).
+// then depending on the meshes measured before it (doc/performance.md, "Memory").
 inline Child_result run_in_new_process(const std::vector<std::string>& arguments, double time_limit)
 {
   int fds[2];
