@@ -1,7 +1,6 @@
 // Bad input, as scans, CAD exports and broken files give it: every entry point answers with an
 // error code and a readable message and leaves the caller's uv map bit for bit as it was, or,
 // where the input can be handled, gives a finite result with the properties it should have.
-// Also: two parameterizers on two threads give the uvs of sequential runs, bit for bit.
 
 #include "test_runs.h"
 
@@ -24,7 +23,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -377,10 +375,10 @@ TEST(BadInput, FixedPairThatIsNotAnEdgeOrSpansComponents)
   Mesh two = np_test::tetrahedron();
   CGAL::copy_face_graph(scaled(np_test::tetrahedron(), 2), two);
   const auto apart = SMP::parameters::weld_coincident_vertices(false);
-  expect_failure(Textured(two, apart.fixed_pair(Vertex(0), Vertex(5))), SMP::ERROR_WRONG_PARAMETER,
-                 "not in the same connected component");
-  expect_failure(Textured(two, apart.fixed_pair(Vertex(0), Vertex(0))), SMP::ERROR_WRONG_PARAMETER,
-                 "not the two ends of an edge");
+  expect_failure(Textured(two, apart.combine(SMP::parameters::fixed_pair(Vertex(0), Vertex(5)))),
+                 SMP::ERROR_WRONG_PARAMETER, "not in the same connected component");
+  expect_failure(Textured(two, apart.combine(SMP::parameters::fixed_pair(Vertex(0), Vertex(0)))),
+                 SMP::ERROR_WRONG_PARAMETER, "not the two ends of an edge");
   Textured_soup soup({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0)}, {{0, 1, 2}}, SMP::parameters::fixed_pair(0, 7));
   expect_failure(soup, SMP::ERROR_WRONG_PARAMETER, "not a vertex of the mesh");
 }
@@ -518,8 +516,9 @@ TEST(BadInput, LargeFlatPolygonIsTriangulatedInItsPlane)
 {
   // CAD caps: a gear of 2,000 corners both ways round at z = 0.1, in a tilted plane far from
   // the origin and in a plane x = const (hole filling's 3D search takes seconds on each,
-  // doc/performance.md); a house of 5 corners; a square with corners along its sides (three
-  // or more in a row); all in the plane, and step 1 takes that triangulation.
+  // doc/performance-log.md, "Step 1 on large polygons"); a house of 5 corners; a square with
+  // corners along its sides (three or more in a row); all in the plane, and step 1 takes that
+  // triangulation.
   namespace NP = SMP::internal::Norm_preserving;
   std::vector<std::vector<Epick_point_3> > outlines;
   for(double turn : {1., -1.})
@@ -647,7 +646,9 @@ TEST(BadInput, SoupFacesOfTwoVerticesAreEdgesAndMissingVerticesAreRefused)
                  SMP::ERROR_WRONG_PARAMETER, "zero extent");
 }
 
-// Inputs on which the fuzzer (fuzz/fuzz_texture_off.cpp) found a crash, read as it reads them.
+// Inputs from the fuzzer (fuzz/fuzz_texture_off.cpp), read as it reads them: hexagons that
+// CGAL's triangulate_faces(), or its hole filling with inexact predicates, cannot triangulate
+// safely, and that step 1 triangulates.
 Textured_soup soup_of_off(const std::string& off)
 {
   std::vector<Point_3> points;
@@ -659,8 +660,8 @@ Textured_soup soup_of_off(const std::string& off)
 
 TEST(FuzzRegression, HexagonsWhoseProjectionCrossesItself)
 {
-  // The constrained Delaunay triangulation of triangulate_faces() inserted the crossings of
-  // these hexagons as vertices and read past the halfedges (an assertion, or out of bounds).
+  // The constrained Delaunay triangulation of triangulate_faces() inserts the crossings of
+  // these hexagons as vertices and reads past the halfedges (an assertion, or out of bounds).
   const Textured_soup soup = soup_of_off("OFF\n12 8 0\n0 0 1\n6 2 1\n2 0 1\n0 2 1\n2 2 1\n2 0 1\n"
                                          "1 1 1\n1 1 1\n1 1 1\n0 1 1\n1 0 5\n1 0 1\n3 0 1 4\n"
                                          "6 8 6 10 2 1 0\n4 9 8 0 3\n6 9 3 4 5 11 7\n4 5 4 1 2\n"
@@ -670,8 +671,8 @@ TEST(FuzzRegression, HexagonsWhoseProjectionCrossesItself)
 
 TEST(FuzzRegression, HexagonWhoseHoleFillingIsIncomplete)
 {
-  // The hole filling of triangulate_faces() left an incomplete patch in the mesh, whose
-  // halfedges then pointed past the end.
+  // The hole filling of triangulate_faces() leaves an incomplete patch in the mesh, whose
+  // halfedges then point past the end.
   const Textured_soup soup = soup_of_off("OFF\n12 8 0\n0 2 1\n1 2 1\n2 0 1\n0 2 21\n2 2 -1\n2 0 -1\n"
                                          "1 1 1\n1 0 -1\n3 1 1\n0 1 -1\n1 0 5\n1 0 -1\n4 3 0 1 4\n"
                                          "6 8 6 10 2 1 0\n4 9 8 0 3\n6 9 3 4 5 11 7\n4 5 4 1 2\n"
@@ -681,42 +682,13 @@ TEST(FuzzRegression, HexagonWhoseHoleFillingIsIncomplete)
 
 TEST(FuzzRegression, HugeCoordinateInAHexagon)
 {
-  // The 3D Delaunay triangulation that hole filling searches asserted on the rounding errors
-  // of inexact predicates around a coordinate of 6.7e97.
+  // The 3D Delaunay triangulation that hole filling searches asserts on the rounding errors
+  // of inexact predicates around a coordinate of 6.7e97: step 1 uses exact ones.
   const Textured_soup soup = soup_of_off("OFF\n12 8 0\n0" + std::string(98, '6') + " 2 1\n2 2 1\n2 0 1\n0 2 21\n"
                                          "0 2 -2\n2 0 -1\n3 1 1\n1 1 -1\n1 0 1\n0 1 -1\n1 0 5\n1 0 -0\n"
                                          "4 3 0 1 4\n6 8 6 10 2 1 0\n4 9 8 0 3\n6 9 3 4 5 11 7\n4 5 4 1 2\n"
                                          "4 9 7 6 8\n4 11 5 2 10\n4 11 10 6 7\n");
   EXPECT_EQ(soup.status, SMP::OK) << soup.report.message;
-}
-
-// Determinism and thread safety: the parameterizer keeps no shared state.
-TEST(Threads, TwoParameterizersOnTwoThreadsGiveTheSequentialUvs)
-{
-  const Mesh meshes[2] = {np_test::load_mesh("nefertiti"), np_test::icosphere()};
-  const auto run = [](const Mesh& mesh, std::vector<Point_2>& uv) {
-    Mapped_mesh mapped(mesh);
-    SMP::Norm_preserving_parameterizer_3<Mesh, SMP::Graph_based_initial_guess> parameterizer;
-    mapped.parameterize(parameterizer, first_halfedge(mapped.mesh));
-    uv.clear();
-    if(mapped.status != SMP::OK) return;
-    for(Vertex v : vertices(mapped.mesh)) uv.push_back(get(mapped.uv, v));
-  };
-  std::vector<Point_2> sequential[2], threaded[2];
-  for(int i = 0; i < 2; ++i)
-  {
-    run(meshes[i], sequential[i]);
-    ASSERT_EQ(sequential[i].size(), num_vertices(meshes[i]));
-  }
-  for(int round = 0; round < 2; ++round)
-  {
-    std::thread first(run, std::cref(meshes[0]), std::ref(threaded[0]));
-    std::thread second(run, std::cref(meshes[1]), std::ref(threaded[1]));
-    first.join();
-    second.join();
-    for(int i = 0; i < 2; ++i)
-      EXPECT_TRUE(threaded[i] == sequential[i]) << "mesh " << i << ", round " << round;
-  }
 }
 
 } // namespace

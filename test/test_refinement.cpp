@@ -17,6 +17,8 @@
 namespace {
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
+using np_test::eq3;
+using np_test::Exact_parameterizer;
 using np_test::Halfedge;
 using np_test::Mapped_mesh;
 using np_test::Mesh;
@@ -25,30 +27,8 @@ using np_test::Point_2;
 using np_test::Point_3;
 using np_test::Vertex;
 
-using Exact_parameterizer =
-  SMP::Norm_preserving_parameterizer_3<Mesh, CGAL::Default, SMP::Interior_point_quadratic_program_traits<double> >;
-
-double l1(const Point_3& p, const Point_3& q)
-{
-  return std::abs(p.x() - q.x()) + std::abs(p.y() - q.y()) + std::abs(p.z() - q.z());
-}
-
 double l2(const Point_3& p, const Point_3& q) { return std::sqrt(CGAL::squared_distance(p, q)); }
 double l2(const Point_2& p, const Point_2& q) { return std::sqrt(CGAL::squared_distance(p, q)); }
-
-// Eq. 3 from the written uvs (NORM_PRESERVING_NO_FIT: mesh units).
-double eq3(const Mapped_mesh& run)
-{
-  double sum = 0;
-  for(auto e : edges(run.mesh))
-  {
-    const Vertex i = source(e, run.mesh), j = target(e, run.mesh);
-    const Point_2 a = get(run.uv, i), b = get(run.uv, j);
-    const double r = l1(run.mesh.point(i), run.mesh.point(j)) - std::abs(a.x() - b.x()) - std::abs(a.y() - b.y());
-    sum += r * r;
-  }
-  return sum;
-}
 
 // The Euclidean objective sum (||P_i - P_j|| - ||T_i - T_j||)^2 of uvs `uv` scaled by `s`.
 template <typename UVMap>
@@ -374,7 +354,7 @@ TEST(Refinement, RefusesNegativeLimitsAndTolerances)
 TEST(Refinement, WholeMeshCallTakesTheOptions)
 {
   const np_test::Textured textured(np_test::load_mesh("cow"),
-                                   SMP::parameters::sign_refinement(3).euclidean_refinement(50));
+                                   SMP::parameters::sign_refinement(3).combine(SMP::parameters::euclidean_refinement(50)));
   ASSERT_EQ(textured.status, SMP::OK) << textured.report.message;
   ASSERT_EQ(textured.report.reports.size(), 1u);
   EXPECT_GE(textured.report.reports[0].sign_refinement_rounds, 1);

@@ -1,11 +1,13 @@
 // One run of the parameterizer, or of the whole-mesh call, on a mesh whose uv map starts
-// filled with a sentinel, so that a test can tell whether the run wrote to it.
+// filled with a sentinel, so that a test can tell whether the run wrote to it; and Eq. 3
+// recomputed from a run's uvs.
 
 #ifndef NP_TEST_RUNS_H
 #define NP_TEST_RUNS_H
 
 #include "test_meshes.h"
 
+#include <CGAL/Surface_mesh_parameterization/Interior_point_quadratic_program_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Norm_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/texture_polygon_mesh.h>
 
@@ -22,6 +24,9 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 using Vertex = Mesh::Vertex_index;
 using Halfedge = Mesh::Halfedge_index;
 using Parameterizer = SMP::Norm_preserving_parameterizer_3<Mesh>;
+// The interior-point QP solver: the reference the ADMM's optima are compared with.
+using Exact_parameterizer =
+  SMP::Norm_preserving_parameterizer_3<Mesh, CGAL::Default, SMP::Interior_point_quadratic_program_traits<double> >;
 
 const Point_2 sentinel(-123.5, 456.25);
 
@@ -70,7 +75,7 @@ struct Textured
   Textured(Mesh m, const NamedParameters& np) : mesh(std::move(m))
   {
     uv = mesh.add_property_map<Vertex, Point_2>("v:uv", sentinel).first;
-    status = SMP::texture_polygon_mesh(mesh, uv, np.report(report));
+    status = SMP::texture_polygon_mesh(mesh, uv, np.combine(SMP::parameters::report(report)));
   }
   bool untouched() const
   {
@@ -101,7 +106,8 @@ struct Textured_soup
   Textured_soup(std::vector<Point_3> p, Polygons f, const NamedParameters& np)
     : points(std::move(p)), polygons(std::move(f)), uv(points.size(), sentinel)
   {
-    status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv), np.report(report));
+    status = SMP::texture_polygon_soup(points, polygons, CGAL::make_property_map(uv),
+                                       np.combine(SMP::parameters::report(report)));
   }
   bool untouched() const
   {
@@ -110,6 +116,27 @@ struct Textured_soup
 };
 
 inline bool is_finite(const Point_2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
+
+inline double l1(const Point_3& p, const Point_3& q)
+{
+  return std::abs(p.x() - q.x()) + std::abs(p.y() - q.y()) + std::abs(p.z() - q.z());
+}
+
+// Eq. 3 recomputed from the written uvs (NORM_PRESERVING_NO_FIT: mesh units) over the edges of
+// the marked component, independently of the solver.
+inline double eq3(const Mapped_mesh& run)
+{
+  double sum = 0;
+  for(auto e : edges(run.mesh))
+  {
+    const Vertex i = source(halfedge(e, run.mesh), run.mesh), j = target(halfedge(e, run.mesh), run.mesh);
+    if(!get(run.marked, i)) continue;
+    const Point_2 a = get(run.uv, i), b = get(run.uv, j);
+    const double r = l1(run.mesh.point(i), run.mesh.point(j)) - std::abs(a.x() - b.x()) - std::abs(a.y() - b.y());
+    sum += r * r;
+  }
+  return sum;
+}
 
 } // namespace np_test
 
