@@ -16,7 +16,7 @@ def main(argv):
         print(__doc__)
         return 2
     build = argv[1]
-    sys.path.insert(0, os.path.join(build, "examples", "python"))
+    sys.path.insert(0, os.path.join(build, "python"))
     import norm_preserving
 
     print("| mesh | vertices | draft: above the optimum | draft: certified bound | default: above the optimum "

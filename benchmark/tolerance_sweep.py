@@ -17,7 +17,7 @@ def main(argv):
     if len(argv) < 3:
         print(__doc__)
         return 2
-    sys.path.insert(0, os.path.join(argv[1], "examples", "python"))
+    sys.path.insert(0, os.path.join(argv[1], "python"))
     import norm_preserving
 
     print("| mesh | vertices | exact (s) | " + " | ".join("%g: above / s" % t for t in TOLERANCES) + " |")

@@ -5,9 +5,9 @@ its visible faces when none is selected) into its active UV map, made if there i
 uv per vertex and no seam: a closed mesh of any genus, with holes or in pieces, is mapped as it
 is. One object at a time: with several objects in edit mode it reports an error and changes
 nothing. It
-calls the Python module norm_preserving, which must be installed for Blender's Python (on
-Debian, `cmake --install` of the package puts it where Debian's blender finds it): doc/manual.md,
-section 8 (Blender).
+calls the Python module norm_preserving: the one beside it when it is installed from the zip
+(norm_preserving_unwrap-VERSION-linux-x86_64.zip), else one installed for Blender's Python:
+doc/manual.md, section 8 (Blender).
 """
 
 bl_info = {
@@ -22,7 +22,6 @@ bl_info = {
 
 import time
 
-import bmesh
 import bpy
 import numpy as np
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntVectorProperty
@@ -83,47 +82,101 @@ class UV_OT_norm_preserving_unwrap(bpy.types.Operator):
                                    "in edit mode (enter edit mode on one only)")
             return {"CANCELLED"}
         try:
-            import norm_preserving
+            norm_preserving = load_module()
         except ImportError as e:
-            self.report({"ERROR"}, f"Norm-preserving unwrap needs the Python module norm_preserving ({e}): see doc/manual.md, section 8 (Blender)")
+            self.report({"ERROR"}, f"Norm-preserving unwrap needs the Python module norm_preserving ({e}): "
+                                   "see doc/manual.md, section 8 (Blender)")
             return {"CANCELLED"}
         mesh = context.active_object.data
-        bm = bmesh.from_edit_mesh(mesh)
-        faces = [f for f in bm.faces if f.select] or [f for f in bm.faces if not f.hide]
-        # The vertices of those faces, numbered in order of first use.
-        index = {}
-        polygons = [[index.setdefault(v, len(index)) for v in f.verts] for f in faces]
-        vertices = np.array([v.co[:] for v in index], dtype=np.float64).reshape(-1, 3)
+        # The mesh's own arrays, read and written whole (foreach_get / foreach_set) in object
+        # mode, where they hold the edits; back to edit mode whatever happens.
+        bpy.ops.object.mode_set(mode="OBJECT")
         try:
-            uv, report = norm_preserving.texture(
-                vertices, polygons if len({len(p) for p in polygons}) > 1 else np.array(polygons),
-                **self.texture_options(bm, index))
-        except (ValueError, TypeError, RuntimeError) as e:
-            # Nothing is written: the mesh and its UV maps stay as they were.
-            self.report({"ERROR"}, f"Norm-preserving unwrap: {e}")
-            return {"CANCELLED"}
-        layer = bm.loops.layers.uv.active or bm.loops.layers.uv.new("UVMap")
-        for face, polygon in zip(faces, polygons):
-            for loop, i in zip(face.loops, polygon):
-                loop[layer].uv = uv[i]
-        bmesh.update_edit_mesh(mesh)
-        self.report({"INFO"}, f"Norm-preserving unwrap: {len(vertices)} vertices in {time.perf_counter() - start:.2f} s, "
-                              f"objective {report.objective:.4g}, "
+            faces = Faces(mesh)
+            try:
+                uv, report = norm_preserving.texture(faces.vertices, faces.polygons, **self.texture_options(faces))
+            except (ValueError, TypeError, RuntimeError) as e:
+                # Nothing is written: the mesh and its UV maps stay as they were.
+                self.report({"ERROR"}, f"Norm-preserving unwrap: {e}")
+                return {"CANCELLED"}
+            faces.write_uvs(uv)
+        finally:
+            bpy.ops.object.mode_set(mode="EDIT")
+        self.report({"INFO"}, f"Norm-preserving unwrap: {len(faces.vertices)} vertices in "
+                              f"{time.perf_counter() - start:.2f} s, objective {report.objective:.4g}, "
                               f"flipped area {100 * report.distortion.flipped_area_fraction:.1f}%")
         return {"FINISHED"}
 
-    def texture_options(self, bm, index):
-        """The keywords of norm_preserving.texture(); `index` numbers the mapped vertices."""
+    def texture_options(self, faces):
+        """The keywords of norm_preserving.texture()."""
         options = dict(guess=self.guess, fit=self.fit, tiles=tuple(self.tiles), keep_coincident=self.keep_coincident,
                        refine_signs=self.refine_signs, refine_euclidean=self.refine_euclidean, quality=self.quality,
                        tolerance=self.tolerance or None, time_limit=self.time_limit or None)
         if self.use_fixed_pair:
-            bm.verts.ensure_lookup_table()
-            pair = [bm.verts[i] if i < len(bm.verts) else None for i in self.fixed_pair]
-            if not all(v in index for v in pair):
-                raise ValueError("a fixed vertex is not a vertex of the faces unwrapped")
-            options["fixed_pair"] = tuple(index[v] for v in pair)
+            options["fixed_pair"] = faces.local_pair(self.fixed_pair)
         return options
+
+
+def load_module():
+    """The module beside the add-on (in the zip's add-on folder), else one installed for Blender's Python."""
+    try:
+        from . import norm_preserving
+    except ImportError as beside:
+        try:
+            import norm_preserving
+        except ImportError as installed:
+            raise ImportError(f"not beside the add-on ({beside}), not installed ({installed})") from installed
+    return norm_preserving
+
+
+class Faces:
+    """The selected faces of a mesh (all visible faces when none is selected), as a vertex array and
+    polygons of indices into it, the vertices numbered in order of first use around the faces."""
+
+    def __init__(self, mesh):
+        self.mesh = mesh
+        count = len(mesh.polygons)
+        select, hide = np.empty(count, dtype=bool), np.empty(count, dtype=bool)
+        mesh.polygons.foreach_get("select", select)
+        mesh.polygons.foreach_get("hide", hide)
+        chosen = np.flatnonzero(select if select.any() else ~hide)
+        first, sides = np.empty(count, dtype=np.int64), np.empty(count, dtype=np.int64)
+        mesh.polygons.foreach_get("loop_start", first)
+        mesh.polygons.foreach_get("loop_total", sides)
+        first, sides = first[chosen], sides[chosen]
+        # The loops of the chosen faces, face after face.
+        self.loops = np.repeat(first - np.cumsum(sides) + sides, sides) + np.arange(sides.sum())
+        loop_vertex = np.empty(len(mesh.loops), dtype=np.int64)
+        mesh.loops.foreach_get("vertex_index", loop_vertex)
+        used, first_use, corner = np.unique(loop_vertex[self.loops], return_index=True, return_inverse=True)
+        order = np.argsort(first_use)
+        self.local = np.empty(len(mesh.vertices), dtype=np.int64)  # mesh vertex -> its index here, or -1
+        self.local.fill(-1)
+        self.local[used[order]] = np.arange(len(used))
+        self.corners = self.local[used[corner]]
+        positions = np.empty(3 * len(mesh.vertices))
+        mesh.vertices.foreach_get("co", positions)
+        self.vertices = positions.reshape(-1, 3)[used[order]]
+        if not len(sides) or (sides == sides[0]).all():
+            self.polygons = self.corners.reshape(-1, sides[0] if len(sides) else 3)
+        else:
+            self.polygons = [p.tolist() for p in np.split(self.corners, np.cumsum(sides)[:-1])]
+
+    def local_pair(self, pair):
+        """The mesh vertices `pair` as indices here."""
+        local = [self.local[i] if 0 <= i < len(self.local) else -1 for i in pair]
+        if min(local) < 0:
+            raise ValueError("a fixed vertex is not a vertex of the faces unwrapped")
+        return tuple(int(i) for i in local)
+
+    def write_uvs(self, uv):
+        """Writes the uv of each vertex to its loops in the faces, in the active UV map (made if none)."""
+        layer = self.mesh.uv_layers.active or self.mesh.uv_layers.new(name="UVMap")
+        uvs = np.empty(2 * len(self.mesh.loops))
+        layer.data.foreach_get("uv", uvs)
+        uvs = uvs.reshape(-1, 2)
+        uvs[self.loops] = np.asarray(uv)[self.corners]
+        layer.data.foreach_set("uv", uvs.ravel())
 
 
 def menu_entry(self, context):

@@ -18,13 +18,14 @@ if(NOT NP_BLENDER)
   message(STATUS "blender not found: the Blender tests will fail (apt-get install blender)")
 endif()
 
-# np_blender_test(NAME name SCRIPT script.py [ARGS arg...]): runs
-#   blender -b --factory-startup --python-exit-code 1 --python script.py -- arg...
+# np_blender_test(NAME name SCRIPT script.py [ENV VAR=value...] [ARGS arg...]): runs
+#   VAR=value... blender -b --factory-startup --python-exit-code 1 --python script.py -- arg...
 function(np_blender_test)
-  cmake_parse_arguments(T "" "NAME;SCRIPT" "ARGS" ${ARGN})
+  cmake_parse_arguments(T "" "NAME;SCRIPT" "ARGS;ENV" ${ARGN})
   if(NP_BLENDER)
     add_test(NAME ${T_NAME}
-             COMMAND ${NP_BLENDER} -b --factory-startup --python-exit-code 1 --python ${T_SCRIPT} -- ${T_ARGS})
+             COMMAND ${CMAKE_COMMAND} -E env ${T_ENV}
+                     ${NP_BLENDER} -b --factory-startup --python-exit-code 1 --python ${T_SCRIPT} -- ${T_ARGS})
   else()
     np_failing_test(NAME ${T_NAME} MESSAGE "blender not found: apt-get install blender")
   endif()

@@ -15,7 +15,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#ifndef NP_PYTHON_WITHOUT_PNG
 #include "checkerboard.h"
+#endif
 #include "output_files.h"
 #include "soup_reader.h"
 #include "texture_settings.h"
@@ -754,6 +756,10 @@ SMP::Parameterization_distortion measure_distortion(const Array_like& vertices, 
   return SMP::measure_soup_distortion(soup.points, soup.polygons, Uv_map{&uvs}, Has_uv_map{&uvs});
 }
 
+#ifndef NP_PYTHON_WITHOUT_PNG
+// write_obj() writes a checkerboard PNG with libpng, which the module of the Blender add-on's zip
+// leaves out (blender/CMakeLists.txt).
+
 // Raises OSError(message).
 [[noreturn]] void raise_os_error(const std::string& message)
 {
@@ -789,6 +795,7 @@ void write_obj(const std::filesystem::path& path, const Array_like& vertices, co
     raise_os_error("cannot write " + (files.directory / np_examples::file_list(files)).string() + ": " + *problem +
                    "; nothing written");
 }
+#endif
 
 std::tuple<py::array_t<double>, py::object> read_mesh(const std::filesystem::path& path)
 {
@@ -973,7 +980,8 @@ Every vertex of any polygon soup gets one uv, with no cut and no seam:
 
 vertices: an (n, 3) array of numbers; faces: an (m, k) integer array, or a sequence of index
 sequences for polygons of mixed sizes. Also: measure_distortion(), CGAL's lscm() and arap() on
-the mesh cut to a disk, read_mesh() and write_obj(). The caller's arrays are read, never
+the mesh cut to a disk, read_mesh() and (but in the module of the Blender add-on's zip)
+write_obj(). The caller's arrays are read, never
 written. The user's guide: doc/manual.md, section 7 (Python).)doc";
 
   bind_reports(m);
@@ -1073,6 +1081,7 @@ RuntimeError: the parameterizer failed.)doc";
     return parameterize_cut<SMP::ARAP_parameterizer_3<Seam_mesh> >(vertices, faces, "arap");
   }, py::arg("vertices"), py::arg("faces"), arap_doc.c_str());
 
+#ifndef NP_PYTHON_WITHOUT_PNG
   m.def("write_obj", &write_obj, py::arg("basename"), py::arg("vertices"), py::arg("faces"), py::arg("uv"),
         R"doc(Writes a textured OBJ with the command-line tool's writer: basename.obj (the vertices
 and faces in their order, one vt per vertex), basename.mtl and a checkerboard basename.png, so
@@ -1092,6 +1101,7 @@ Raises
 TypeError, ValueError: as texture() does for the arrays; ValueError too for a non-finite
     coordinate (on a face or not), and a basename that names a directory.
 OSError: the files cannot be written (nothing is).)doc");
+#endif
 
   m.def("read_mesh", &read_mesh, py::arg("path"),
         R"doc(Reads a mesh file as the command-line tool does: OBJ (with its l lines: faces of two

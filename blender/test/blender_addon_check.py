@@ -3,7 +3,10 @@
     blender -b --factory-startup --python-exit-code 1 --python blender_addon_check.py -- \
         <directory of the module> <add-on> <cow.off> <scratch directory> <tools/texture_mesh/test/test_meshes.py>
 
-installs and enables the add-on, imports the cow through Blender's OBJ importer (an OBJ written
+or, for the zip an artist installs, with the zip as both the module and the add-on (and an empty
+user configuration: BLENDER_USER_CONFIG and BLENDER_USER_SCRIPTS in the scratch directory), which
+must then be the only norm_preserving module Blender's Python finds. It installs and enables the
+add-on, imports the cow through Blender's OBJ importer (an OBJ written
 by test_meshes.py's write_obj()), unwraps it in edit mode, and checks the UV map: one uv per
 loop, the same for every loop of a vertex, finite, in [0,1]; that unselected faces keep their
 uvs; that an error leaves the mesh and its UV maps as they were; and that with two objects in
@@ -27,11 +30,22 @@ scratch = pathlib.Path(scratch)
 shutil.rmtree(scratch, ignore_errors=True)
 scratch.mkdir(parents=True)
 
-# The module of the build tree, not an installed one.
-sys.path.insert(0, module_dir)
-import norm_preserving  # noqa: E402
+from_zip = addon.endswith(".zip")
+if from_zip:
+    # No module for Blender's Python: the zip's alone is tested.
+    try:
+        import norm_preserving
+    except ImportError:
+        pass
+    else:
+        raise AssertionError(f"Blender's Python finds a norm_preserving module ({norm_preserving.__file__}): "
+                             "the zip's would not be the one tested")
+else:
+    # The module of the build tree, not an installed one.
+    sys.path.insert(0, module_dir)
+    import norm_preserving  # noqa: E402
 
-assert pathlib.Path(norm_preserving.__file__).parent.resolve() == pathlib.Path(module_dir).resolve()
+    assert pathlib.Path(norm_preserving.__file__).parent.resolve() == pathlib.Path(module_dir).resolve()
 
 # The OBJ writer of the command-line tool's tests.
 spec = importlib.util.spec_from_file_location("test_meshes", test_meshes_path)
@@ -107,13 +121,22 @@ def edit_mode(obj, select):
     bmesh.update_edit_mesh(obj.data)
 
 
-# Install and enable the add-on as a user does (Edit > Preferences > Add-ons > Install), into a
-# scripts directory of the scratch directory rather than the user's own.
-bpy.context.preferences.filepaths.script_directory = str(scratch / "scripts")
-(scratch / "scripts" / "addons").mkdir(parents=True)
-bpy.ops.preferences.addon_install(filepath=addon, target="PREFS")
+# Install and enable the add-on as a user does (Edit > Preferences > Add-ons > Install): the zip
+# into the (empty) user scripts directory, the file into a scripts directory of the scratch
+# directory rather than the user's own.
+if from_zip:
+    bpy.ops.preferences.addon_install(filepath=addon)
+else:
+    bpy.context.preferences.filepaths.script_directory = str(scratch / "scripts")
+    (scratch / "scripts" / "addons").mkdir(parents=True)
+    bpy.ops.preferences.addon_install(filepath=addon, target="PREFS")
 bpy.ops.preferences.addon_enable(module="norm_preserving_unwrap")
 assert hasattr(bpy.types, "UV_OT_norm_preserving_unwrap")
+if from_zip:
+    # The add-on's own module, from its folder.
+    norm_preserving = importlib.import_module("norm_preserving_unwrap.norm_preserving")
+    installed = pathlib.Path(bpy.utils.user_resource("SCRIPTS", path="addons")) / "norm_preserving_unwrap"
+    assert pathlib.Path(norm_preserving.__file__).parent.resolve() == installed.resolve(), norm_preserving.__file__
 assert any(f.__name__ == "menu_entry" for f in bpy.types.VIEW3D_MT_uv_map._dyn_ui_initialize())
 
 # The cow, as an OBJ file (CGAL's is OFF), through Blender's OBJ importer.
