@@ -8,7 +8,8 @@ MODULE and ADDON: the directory of the module built by python/ and blender/norm_
 or the add-on's zip twice (then the zip's own module, built on the C and C++ runtime alone).
 The mesh is read with the module, subdivided STEPS times at edge midpoints (bmesh's
 subdivide_edges: each triangle into four, the vertex count of Loop subdivision) and, in every
-round, mapped whole at each QUALITY (default: draft default) by the module's call, then by the
+round, mapped whole at each QUALITY (default: draft default) by the module's call on the arrays
+the operator hands it, then by the
 operator (in edit mode, which is entered and left outside the timing), then by Blender's
 conformal unwrap. Prints one CSV row per measurement:
 what,quality,round,vertices,seconds."""
@@ -21,7 +22,6 @@ import time
 
 import bmesh
 import bpy
-import numpy as np
 
 module, addon, mesh_path, steps, rounds, scratch, *qualities = sys.argv[sys.argv.index("--") + 1:]
 qualities = qualities or ["draft", "default"]
@@ -56,11 +56,11 @@ bpy.context.collection.objects.link(obj)
 bpy.context.view_layer.objects.active = obj
 obj.select_set(True)
 count = len(data.vertices)
-positions = np.empty(3 * count)
-data.vertices.foreach_get("co", positions)
-corners = np.empty(len(data.loops), dtype=np.int64)
-data.loops.foreach_get("vertex_index", corners)
-triangles = corners.reshape(-1, 3)
+# The arrays the operator hands the module with every face selected (the vertices numbered in
+# order of first use).
+data.polygons.foreach_set("select", [True] * len(data.polygons))
+faces = importlib.import_module("norm_preserving_unwrap").Faces(data)
+assert len(faces.vertices) == count, (len(faces.vertices), count)
 
 
 def timed(what, quality, round, call):
@@ -72,7 +72,7 @@ def timed(what, quality, round, call):
 print("what,quality,round,vertices,seconds")
 for r in range(int(rounds)):
     for quality in qualities:
-        timed("module", quality, r, lambda: norm_preserving.texture(positions.reshape(-1, 3), triangles, quality=quality))
+        timed("module", quality, r, lambda: norm_preserving.texture(faces.vertices, faces.polygons, quality=quality))
     # The operators in edit mode, every face selected (entering and leaving it is not timed).
     bpy.ops.object.mode_set(mode="EDIT")
     bpy.ops.mesh.select_all(action="SELECT")
